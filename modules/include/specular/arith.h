@@ -1,0 +1,131 @@
+// The arithmetic of every block of Fig. 1, written once, on integer codes.
+//
+// Each function is what one block does between its input and output pins. The
+// block's SC_MODULE calls it from its process; the kernel-free Core calls the same
+// functions in the same order. Nothing here knows about SystemC.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "specular/format.h"
+
+namespace specular {
+namespace arith {
+
+/// Wrap a code to `format`'s width, as a bus of that width would (two's complement).
+inline code_t wrap(const FixedFormat& format, code_t code) {
+  const int w = format.width();
+  const std::uint64_t mask = (std::uint64_t{1} << w) - 1;
+  std::uint64_t bits = static_cast<std::uint64_t>(code) & mask;
+  if (format.is_signed && (bits >> (w - 1)) != 0) bits |= ~mask;  // sign-extend
+  return static_cast<code_t>(bits);
+}
+
+/// Saturate a code to `format`'s range (downstream of register 9: silent, by design).
+inline code_t saturate(const FixedFormat& format, __int128 value) {
+  if (value > format.max_code()) return format.max_code();
+  if (value < format.min_code()) return format.min_code();
+  return static_cast<code_t>(value);
+}
+
+/// Drop `shift` fraction bits, rounding half up (a multiplier's rounding stage).
+inline __int128 round_shift(__int128 value, int shift) {
+  if (shift <= 0) return value << -shift;
+  return (value + (__int128{1} << (shift - 1))) >> shift;
+}
+
+// ---- Multiplexer 3: ROM 5 address bus -------------------------------------------
+/// in0 = register 1 (cos λ, U1.16) aligned to register 9's format, in1 = register 9.
+inline code_t mux3(const Formats& f, bool select36, code_t reg1, code_t reg9) {
+  return select36 ? reg9 : reg1 << (f.reg9.frac_bits - f.cos.frac_bits);
+}
+
+// ---- ROM 5: log2 unit (leading-one detector + mantissa ROM) ---------------------
+/// ROM 5 is the usual hardware log2 unit (spec §4): a leading-one detector finds the
+/// exponent, the next `rom5_addr_bits` bits address a table of log2(1.m), and the
+/// exponent is added back. Non-positive inputs (a zero cos code, or the value that
+/// register 9 holds after a saturated or literal second pass) read as log2 of the
+/// smallest cos code, −F (spec, Decision "log2 0").
+class Rom5Table {
+ public:
+  explicit Rom5Table(const Formats& formats);
+  /// log2 of a multiplexer-3 code, in ROM 5's output format.
+  code_t log2(code_t bus) const {
+    if (bus <= 0) return zero_log2_;
+    const int msb = 63 - __builtin_clzll(static_cast<std::uint64_t>(bus));
+    const int below = msb - addr_bits_;  // bits below the address field
+    const std::uint64_t mantissa = static_cast<std::uint64_t>(bus) & ((std::uint64_t{1} << msb) - 1);
+    const std::uint64_t address = below >= 0 ? mantissa >> below : mantissa << -below;
+    const code_t exponent = msb - bus_frac_bits_;
+    return (exponent << word_bits_) + words_[address];
+  }
+  /// The table itself, for reports and tests: word a = round(log2(1 + a/2^M) · 2^W).
+  const std::vector<std::uint32_t>& words() const { return words_; }
+
+ private:
+  std::vector<std::uint32_t> words_;
+  int addr_bits_;
+  int word_bits_;
+  int bus_frac_bits_;
+  code_t zero_log2_;
+};
+
+// ---- Multiplexer 4: multiplier 6's second operand ------------------------------
+/// in0 = register 2 (n), in1 = pin 19 (the constant ½); both on the U10.1 bus.
+inline code_t mux4(const Formats& f, bool select36, code_t reg2, code_t pin19_half) {
+  return select36 ? pin19_half : reg2 << f.mux4.frac_bits;
+}
+
+// ---- Multiplier 6 -------------------------------------------------------------
+/// log2 × (n or ½), rounded to nearest to adder 8's format and wrapped to its width.
+inline code_t mul6(const Formats& f, code_t rom5_log2, code_t mux4_operand) {
+  const __int128 product = static_cast<__int128>(rom5_log2) * mux4_operand;
+  const int shift = f.log2.frac_bits + f.mux4.frac_bits - f.reg9.frac_bits;
+  return wrap(f.reg9, static_cast<code_t>(round_shift(product, shift)));
+}
+
+// ---- Inverter block 7 ----------------------------------------------------------
+/// Bitwise NOT across the bus (with carry-in 34 this makes adder 8 subtract).
+inline code_t inv7(const Formats& f, code_t product) { return wrap(f.reg9, ~product); }
+
+// ---- Combinational adder 8 -----------------------------------------------------
+/// pin 20 (1.0) + inverted product + carry-in 34 = 1 − product, modulo the bus width.
+/// Under Saturation::clamp a negative sum saturates at 0 (spec, Decision).
+inline code_t adder8(const Formats& f, Saturation saturation, code_t pin20_one, code_t inverted,
+                     bool carry34) {
+  const code_t sum = wrap(f.reg9, pin20_one + inverted + (carry34 ? 1 : 0));
+  return (saturation == Saturation::clamp && sum < 0) ? 0 : sum;
+}
+
+// ---- ROM 38: normalisation coefficient K(n) ------------------------------------
+/// K(n) for every address 0 .. 2^n_bits − 1, rounded to the ROM word (spec §1).
+class Rom38Table {
+ public:
+  Rom38Table(const Formats& formats, Normalisation policy);
+  code_t k(code_t reg2) const { return words_[static_cast<std::size_t>(reg2) & mask_]; }
+  const std::vector<code_t>& words() const { return words_; }
+
+ private:
+  std::vector<code_t> words_;
+  std::size_t mask_;
+};
+
+// ---- Multiplier 39 -------------------------------------------------------------
+/// register 9 × K(n), rounded to nearest, saturated to the norm format (between the
+/// two passes register 9 holds up to ~16 000; that garbage saturates silently).
+inline code_t mul39(const Formats& f, code_t reg9, code_t rom38_k) {
+  const __int128 product = static_cast<__int128>(reg9) * rom38_k;
+  const int shift = f.reg9.frac_bits + f.rom38.frac_bits - f.norm.frac_bits;
+  return saturate(f.norm, round_shift(product, shift));
+}
+
+// ---- Multipliers 13, 14, 15 ----------------------------------------------------
+/// K·A × intensity (register 10, 11 or 12), rounded and saturated to the pin format.
+inline code_t mul_rgb(const Formats& f, code_t norm39, code_t intensity) {
+  const __int128 product = static_cast<__int128>(norm39) * intensity;
+  return saturate(f.out, round_shift(product, f.norm.frac_bits - f.out.frac_bits));
+}
+
+}  // namespace arith
+}  // namespace specular

@@ -1,0 +1,82 @@
+// The bit-accurate core: the two passes of Fig. 1 without the SystemC kernel.
+//
+// It calls the per-block functions of arith.h in the order the datapath does, so its
+// results are the pin model's to the bit (a test proves it). Use it where cycles do
+// not matter: sweeps, the TLM `lt` model, rendering, studies.
+#pragma once
+
+#include <array>
+
+#include "specular/arith.h"
+#include "specular/format.h"
+
+namespace specular {
+
+/// Everything fixed when a device is built: widths and both policies.
+struct Config {
+  Widths widths{};
+  Normalisation normalisation = Normalisation::patent;
+  Saturation saturation = Saturation::clamp;
+};
+
+/// The operands as the device's registers hold them (codes, already checked).
+struct Operands {
+  code_t cos = 0;                 ///< register 1 (U1.16 code)
+  code_t n = 1;                   ///< register 2
+  std::array<code_t, 3> rgb{};    ///< registers 10, 11, 12
+};
+
+/// What the device's registers and output pins hold after one operation.
+struct Result {
+  code_t reg1 = 0;                ///< register 1: the cos code actually used
+  code_t reg9_pass1 = 0;          ///< register 9 after pass 1: 1 − n·log2 cos λ
+  code_t reg9_pass2 = 0;          ///< register 9 after pass 2: A ≈ cos^n λ
+  code_t rom38_k = 0;             ///< ROM 38: K(n)
+  code_t norm39 = 0;              ///< multiplier 39: K(n)·A
+  std::array<code_t, 3> out{};    ///< pins 24, 25, 26
+};
+
+class Core {
+ public:
+  explicit Core(const Config& config = Config{});
+
+  /// One operation: pass 1 (select 36 = 0), pass 2 (select 36 = 1), then the
+  /// combinational tail (ROM 38, multiplier 39, multipliers 13–15).
+  Result run(const Operands& in) const {
+    Result r;
+    r.reg1 = in.cos;
+    r.reg9_pass1 = pass(false, in.cos, 0, in.n);
+    r.reg9_pass2 = pass(true, in.cos, r.reg9_pass1, in.n);
+    r.rom38_k = rom38_.k(in.n);
+    r.norm39 = arith::mul39(formats_, r.reg9_pass2, r.rom38_k);
+    for (int ch = 0; ch < 3; ++ch) r.out[ch] = arith::mul_rgb(formats_, r.norm39, in.rgb[ch]);
+    return r;
+  }
+
+  /// The combinational path from registers 1, 2, 9 to adder 8's output, for a
+  /// given select 36: multiplexers 3, 4 → ROM 5 → multiplier 6 → inverter 7 → adder 8.
+  code_t pass(bool select36, code_t reg1, code_t reg9, code_t reg2) const {
+    const code_t address = arith::mux3(formats_, select36, reg1, reg9);
+    const code_t operand = arith::mux4(formats_, select36, reg2, formats_.half_code());
+    const code_t product = arith::mul6(formats_, rom5_.log2(address), operand);
+    return arith::adder8(formats_, config_.saturation, formats_.one_code(),
+                         arith::inv7(formats_, product), true);
+  }
+
+  /// Operands from user values: checks ranges (throws std::out_of_range naming the
+  /// value and its allowed range) and quantises cos λ to register 1's format.
+  Operands operands(double cos_lambda, long long n, long long r, long long g, long long b) const;
+
+  const Config& config() const { return config_; }
+  const Formats& formats() const { return formats_; }
+  const arith::Rom5Table& rom5() const { return rom5_; }
+  const arith::Rom38Table& rom38() const { return rom38_; }
+
+ private:
+  Config config_;
+  Formats formats_;
+  arith::Rom5Table rom5_;
+  arith::Rom38Table rom38_;
+};
+
+}  // namespace specular

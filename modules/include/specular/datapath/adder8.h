@@ -1,0 +1,25 @@
+// Combinational adder 8 of Fig. 1.
+#pragma once
+
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// pin 20 (1.0) + inverter 7 + carry-in 34 = 1 − product; saturates at 0 under
+/// Saturation::clamp (spec, Decision "negative results").
+class Adder8 : public sc_core::sc_module {
+ public:
+  bus_in one20{"one20"};
+  bus_in inverted{"inverted"};
+  wire_in carry34{"carry34"};
+  bus_out sum{"sum"};
+
+  Adder8(sc_core::sc_module_name name, const Formats& formats, Saturation saturation);
+
+ private:
+  void evaluate();
+  const Formats& formats_;
+  Saturation saturation_;
+};
+
+}  // namespace specular

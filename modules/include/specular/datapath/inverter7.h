@@ -1,0 +1,21 @@
+// Inverter block 7 of Fig. 1.
+#pragma once
+
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// Bitwise NOT of multiplier 6's product: with carry-in 34, adder 8 subtracts.
+class Inverter7 : public sc_core::sc_module {
+ public:
+  bus_in product{"product"};
+  bus_out inverted{"inverted"};
+
+  Inverter7(sc_core::sc_module_name name, const Formats& formats);
+
+ private:
+  void evaluate();
+  const Formats& formats_;
+};
+
+}  // namespace specular

@@ -1,0 +1,22 @@
+// Multiplier 6 of Fig. 1: ROM 5 × multiplexer 4.
+#pragma once
+
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// log2 × (n in pass 1, ½ in pass 2), rounded to adder 8's format.
+class Multiplier6 : public sc_core::sc_module {
+ public:
+  bus_in log2{"log2"};
+  bus_in operand{"operand"};
+  bus_out product{"product"};
+
+  Multiplier6(sc_core::sc_module_name name, const Formats& formats);
+
+ private:
+  void evaluate();
+  const Formats& formats_;
+};
+
+}  // namespace specular

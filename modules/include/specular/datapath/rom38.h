@@ -1,0 +1,22 @@
+// ROM 38 of Fig. 1: the normalisation coefficient K(n).
+#pragma once
+
+#include "specular/arith.h"
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// K(n) addressed by register 2; contents set by the normalisation policy.
+class Rom38 : public sc_core::sc_module {
+ public:
+  bus_in reg2{"reg2"};
+  bus_out k{"k"};
+
+  Rom38(sc_core::sc_module_name name, const arith::Rom38Table& table);
+
+ private:
+  void evaluate();
+  const arith::Rom38Table& table_;
+};
+
+}  // namespace specular

@@ -1,0 +1,116 @@
+// Every bus's fixed-point format and every ROM's organisation, in one place.
+//
+// Values travel through the model as integer codes (`code_t`); a FixedFormat says
+// how a code maps to a real number. Real numbers appear only at the edges (reports,
+// traces, the reference). See docs/design.md for the table of formats and why.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace specular {
+
+/// An integer code on a bus. 64 bits hold every default format with room to spare.
+using code_t = std::int64_t;
+
+/// Two's-complement (or unsigned) fixed-point format: [sign] int_bits . frac_bits.
+struct FixedFormat {
+  bool is_signed = false;
+  int int_bits = 0;   ///< integer bits, not counting the sign bit
+  int frac_bits = 0;  ///< fraction bits
+
+  constexpr int width() const { return (is_signed ? 1 : 0) + int_bits + frac_bits; }
+  constexpr code_t max_code() const { return (code_t{1} << (int_bits + frac_bits)) - 1; }
+  constexpr code_t min_code() const {
+    return is_signed ? -(code_t{1} << (int_bits + frac_bits)) : 0;
+  }
+  constexpr code_t one() const { return code_t{1} << frac_bits; }
+  double to_real(code_t code) const { return std::ldexp(static_cast<double>(code), -frac_bits); }
+  /// Resolution: the value of one least significant bit.
+  double lsb() const { return std::ldexp(1.0, -frac_bits); }
+  /// "S14.24" / "U1.16": how the design note and the reports write a format.
+  std::string name() const;
+};
+
+/// Normalisation policy: what ROM 38 holds (spec, Decision "normalisation").
+enum class Normalisation {
+  patent,  ///< K(n) = 2π/(n+2), as claimed (default)
+  energy,  ///< K(n) = (n+2)/(2π), makes the exact lobe's hemisphere integral 1
+  none,    ///< K(n) = 1, the prototype device UA 22802
+};
+
+/// What adder 8 does with a negative result (spec, Decision "negative results").
+enum class Saturation {
+  clamp,    ///< saturate at 0 (default; negative light is meaningless)
+  literal,  ///< keep the signed value, for study
+};
+
+const char* to_string(Normalisation policy);
+const char* to_string(Saturation policy);
+/// Parse a policy name; throws std::invalid_argument naming the value and the choices.
+Normalisation parse_normalisation(const std::string& text);
+Saturation parse_saturation(const std::string& text);
+
+/// The widths the designer chooses. Every bus format below is derived from these,
+/// so a width changes here and nowhere else. Defaults are justified in docs/design.md.
+struct Widths {
+  int cos_frac_bits = 16;   ///< pin 17 / register 1: cos λ as U1.F
+  int n_bits = 10;          ///< pin 18 / register 2: n as an unsigned integer (1..1000)
+  int rgb_bits = 8;         ///< pins 21–23 / registers 10–12: unsigned intensities
+  int rom5_addr_bits = 15;  ///< ROM 5 address: mantissa bits after the leading one
+  int rom5_word_bits = 22;  ///< ROM 5 word: fraction bits of log2(1.m) ∈ [0, 1)
+  int reg9_int_bits = 14;   ///< adder 8 / register 9 / multiplexer 3 bus: integer bits
+  int reg9_frac_bits = 22;  ///< ... and fraction bits (signed format)
+  int rom38_int_bits = 8;   ///< ROM 38 word: K(n) as U8.F (energy policy reaches 163)
+  int rom38_frac_bits = 16;
+  int norm_int_bits = 10;   ///< multiplier 39 output: K·A as a signed format
+  int norm_frac_bits = 20;
+  int out_int_bits = 18;    ///< pins 24–26: K·A·I as a signed format (32 bits in all)
+  int out_frac_bits = 13;
+
+  /// Throws std::invalid_argument naming the offending width and its allowed range.
+  void validate() const;
+};
+
+/// Bus formats derived from Widths; computed once, read everywhere.
+struct Formats {
+  explicit Formats(const Widths& widths = Widths{});
+
+  Widths widths;
+  FixedFormat cos;     ///< pin 17, register 1 (U1.16)
+  FixedFormat n;       ///< pin 18, register 2, ROM 38 address (U10.0)
+  FixedFormat rgb;     ///< pins 21–23, registers 10–12 (U8.0)
+  FixedFormat mux4;    ///< multiplexer 4 output: n or ½ on one bus (U10.1)
+  FixedFormat log2;    ///< ROM 5 output: log2 of its input (S5.22)
+  FixedFormat reg9;    ///< multiplier 6 / inverter 7 / adder 8 / register 9 / multiplexer 3 (S14.22)
+  FixedFormat rom38;   ///< ROM 38 word K(n) (U8.16)
+  FixedFormat norm;    ///< multiplier 39 output K·A (S10.20)
+  FixedFormat out;     ///< pins 24–26, multipliers 13–15 (S18.13)
+
+  int rom5_words() const { return 1 << widths.rom5_addr_bits; }
+  int rom38_words() const { return 1 << widths.n_bits; }
+  long rom5_bits() const { return static_cast<long>(rom5_words()) * widths.rom5_word_bits; }
+  long rom38_bits() const { return static_cast<long>(rom38_words()) * rom38.width(); }
+
+  /// Pin 19: the constant ½ in multiplexer 4's format.
+  code_t half_code() const { return code_t{1} << (mux4.frac_bits - 1); }
+  /// Pin 20: the constant 1 in adder 8's format.
+  code_t one_code() const { return reg9.one(); }
+};
+
+/// Smallest and largest n the device accepts (spec §1).
+constexpr unsigned n_min = 1;
+constexpr unsigned n_max = 1000;
+
+/// cos λ (a real in [0, 1]) to the code held in register 1, rounded to nearest.
+/// Throws std::out_of_range naming the value and the range (NaN included).
+code_t quantise_cos(const Formats& formats, double cos_lambda);
+/// Checks n ∈ [1, 1000]; throws std::out_of_range naming the value and the range.
+unsigned check_n(long long n);
+/// Checks an intensity fits the RGB format; throws std::out_of_range naming it.
+unsigned check_rgb(const Formats& formats, long long intensity, const char* channel);
+/// Checks a cos code is in [0, 1.0]; throws std::out_of_range naming it.
+code_t check_cos_code(const Formats& formats, code_t code);
+
+}  // namespace specular

@@ -1,0 +1,44 @@
+// Double-precision references: the patent's formula on the quantised inputs, and
+// the exact Blinn–Phong lobe. Independent of the fixed-point arithmetic: nothing
+// here reads a format other than the resolution of the cos λ input.
+#pragma once
+
+#include <array>
+
+#include "specular/format.h"
+
+namespace specular {
+namespace reference {
+
+/// log2 cos λ, with log2 0 defined as log2 of the smallest non-zero code, −F
+/// (spec, Decision "log2 0").
+double log2_cos(double cos_q, int cos_frac_bits);
+
+/// A = 1 − ½·log2(1 − n·log2 cos λ), saturated at 0 under Saturation::clamp.
+double approx(double cos_q, unsigned n, Saturation saturation, int cos_frac_bits);
+
+/// K(n) under a normalisation policy: 2π/(n+2), (n+2)/(2π) or 1.
+double k(unsigned n, Normalisation policy);
+
+/// The exact lobe cos^n λ.
+double exact_lobe(double cos_q, unsigned n);
+
+/// Every reference figure for one computation, as the testbench reports them.
+struct Figures {
+  double cos_q = 0;              ///< the value held in register 1
+  double approx_ref = 0;         ///< A in double, same saturation policy
+  double norm_ref = 0;           ///< K(n)·approx_ref
+  double norm_exact = 0;         ///< K(n)·cos_q^n
+  std::array<double, 3> out_ref{};  ///< norm_ref·R, ·G, ·B
+};
+
+Figures evaluate(double cos_q, unsigned n, const std::array<double, 3>& rgb,
+                 Normalisation normalisation, Saturation saturation, int cos_frac_bits);
+
+/// Accuracy bounds the device is held to (issue 2, item 7).
+double approx_tolerance();                        ///< 2^-10
+double norm_tolerance(double k);                  ///< 2^-10·max(1, K)
+double out_tolerance(double k, double intensity, double out_lsb);  ///< 2^-10·max(1,K)·I + 1 LSB
+
+}  // namespace reference
+}  // namespace specular

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Install every dependency of the project from Debian 12 (bookworm) packages.
+#
+#   scripts/setup.sh              build, test, figures and plotting tools
+#   scripts/setup.sh --gtkwave    ... and GTKWave, to open the VCD waveforms
+#
+# Safe to run again: apt-get skips what is already installed. Uses sudo only when not
+# run as root. Non-interactive (DEBIAN_FRONTEND=noninteractive).
+set -euo pipefail
+
+# What each package is for:
+#   build-essential, cmake, pkg-config  compiler and build (SystemC is found via pkg-config)
+#   libsystemc-dev                      SystemC 2.3.4 (kernel, TLM-2.0)
+#   libgtest-dev, googletest            GoogleTest for the test suite (ctest)
+#   libbenchmark-dev                    Google Benchmark for the performance study
+#   graphviz                            scripts/render_figures.sh (docs/fig1.svg, fig2.svg)
+#   python3-numpy, python3-matplotlib   plots of the numerical study
+#   gnuplot-nox                         quick plots from the testbench's CSV output
+PACKAGES=(
+  build-essential cmake pkg-config
+  libsystemc-dev
+  libgtest-dev googletest
+  libbenchmark-dev
+  graphviz
+  python3-numpy python3-matplotlib
+  gnuplot-nox
+)
+OPTIONAL_GTKWAVE=(gtkwave)
+
+usage() {
+  sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+}
+
+with_gtkwave=0
+for arg in "$@"; do
+  case "$arg" in
+    --gtkwave) with_gtkwave=1 ;;
+    -h|--help) usage; exit 0 ;;
+    *) echo "setup.sh: unknown option '$arg' (allowed: --gtkwave, --help)" >&2; exit 2 ;;
+  esac
+done
+
+if ! command -v apt-get >/dev/null 2>&1; then
+  echo "setup.sh: apt-get not found; this script supports Debian 12 (bookworm)." >&2
+  echo "setup.sh: install by hand: ${PACKAGES[*]}" >&2
+  exit 1
+fi
+if [ -r /etc/os-release ]; then
+  # shellcheck disable=SC1091
+  . /etc/os-release
+  if [ "${ID:-}" != "debian" ] || [ "${VERSION_ID:-}" != "12" ]; then
+    echo "setup.sh: note: written for Debian 12, running on ${PRETTY_NAME:-unknown}; continuing." >&2
+  fi
+fi
+
+SUDO=()
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then
+    SUDO=(sudo)
+  else
+    echo "setup.sh: not root and sudo is not installed; run this script as root." >&2
+    exit 1
+  fi
+fi
+
+if [ "$with_gtkwave" -eq 1 ]; then
+  PACKAGES+=("${OPTIONAL_GTKWAVE[@]}")
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+
+echo "+ apt-get update"
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get update
+
+echo "+ apt-get install -y --no-install-recommends ${PACKAGES[*]}"
+"${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive \
+  apt-get install -y --no-install-recommends "${PACKAGES[@]}"
+
+echo "setup.sh: installed:"
+dpkg-query -W -f='  ${Package} ${Version}\n' "${PACKAGES[@]}"

@@ -136,7 +136,7 @@ void PinHarness::trace(sc_core::sc_trace_file* file) const {
       {&pin21_r, &f.rgb},   {&pin22_g, &f.rgb}, {&pin23_b, &f.rgb},     {&pin24_r, &f.out},
       {&pin25_g, &f.out},   {&pin26_b, &f.out}};
   for (const auto& [bus, format] : buses)
-    sc_core::sc_trace(file, bus->read(), scope + bus->basename(), format->width());
+    trace_bus(file, *bus, *format, scope + bus->basename());
   for (const wire* w : {&pin27_start, &pin29_reset_n, &pin30_load_n, &pin31_load_r,
                         &pin32_load_g, &pin33_load_b, &pin34_carry, &pin35_done})
     sc_core::sc_trace(file, *w, scope + w->basename());

@@ -14,12 +14,13 @@ namespace specular {
 namespace arith {
 
 /// Wrap a code to `format`'s width, as a bus of that width would (two's complement).
+/// Two shifts: the bits above the width leave at the top, and shifting back
+/// sign-extends a signed bus (the same value as mask-and-extend, fewer instructions).
 inline code_t wrap(const FixedFormat& format, code_t code) {
-  const int w = format.width();
-  const std::uint64_t mask = (std::uint64_t{1} << w) - 1;
-  std::uint64_t bits = static_cast<std::uint64_t>(code) & mask;
-  if (format.is_signed && (bits >> (w - 1)) != 0) bits |= ~mask;  // sign-extend
-  return static_cast<code_t>(bits);
+  const int unused = 64 - format.width();
+  const std::uint64_t bits = static_cast<std::uint64_t>(code) << unused;
+  return format.is_signed ? static_cast<code_t>(bits) >> unused
+                          : static_cast<code_t>(bits >> unused);
 }
 
 /// Saturate a code to `format`'s range (downstream of register 9: silent, by design).
@@ -31,8 +32,25 @@ inline code_t saturate(const FixedFormat& format, __int128 value) {
 
 /// Drop `shift` fraction bits, rounding half up (a multiplier's rounding stage).
 inline __int128 round_shift(__int128 value, int shift) {
-  if (shift <= 0) return value << -shift;
+  if (shift <= 0) return value * (__int128{1} << -shift);  // a multiply: defined for value < 0
   return (value + (__int128{1} << (shift - 1))) >> shift;
+}
+
+/// a × b with `shift` fraction bits dropped (rounding half up), saturated to `format`:
+/// the tail of multipliers 39 and 13–15. On 64 bits when neither the product nor the
+/// rounding overflows (always, at the default widths: docs/performance.md), otherwise
+/// on 128 bits; the result is the same either way.
+inline code_t multiply_round_saturate(const FixedFormat& format, code_t a, code_t b, int shift) {
+  code_t product, biased;
+  if (shift > 0 && !__builtin_mul_overflow(a, b, &product) &&
+      !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased)) {
+    const code_t value = biased >> shift;
+    // In range when only sign bits sit above the format's magnitude bits.
+    const code_t above = value >> (format.int_bits + format.frac_bits);
+    if (above == 0 || (format.is_signed && above == -1)) return value;
+    return value < 0 ? format.min_code() : format.max_code();
+  }
+  return saturate(format, round_shift(static_cast<__int128>(a) * b, shift));
 }
 
 // ---- Multiplexer 3: ROM 5 address bus -------------------------------------------
@@ -54,11 +72,12 @@ class Rom5Table {
   code_t log2(code_t bus) const {
     if (bus <= 0) return zero_log2_;
     const int msb = 63 - __builtin_clzll(static_cast<std::uint64_t>(bus));
-    const int below = msb - addr_bits_;  // bits below the address field
-    const std::uint64_t mantissa = static_cast<std::uint64_t>(bus) & ((std::uint64_t{1} << msb) - 1);
-    const std::uint64_t address = below >= 0 ? mantissa >> below : mantissa << -below;
+    // The leading one moves to bit 63 and out; the next addr_bits bits are the address
+    // (zero-filled when fewer bits follow the leading one).
+    const std::uint64_t aligned = (static_cast<std::uint64_t>(bus) << (63 - msb)) << 1;
+    const std::uint64_t address = aligned >> (64 - addr_bits_);
     const code_t exponent = msb - bus_frac_bits_;
-    return (exponent << word_bits_) + words_[address];
+    return exponent * (code_t{1} << word_bits_) + words_[address];
   }
   /// The table itself, for reports and tests: word a = round(log2(1 + a/2^M) · 2^W).
   const std::vector<std::uint32_t>& words() const { return words_; }
@@ -80,9 +99,13 @@ inline code_t mux4(const Formats& f, bool select36, code_t reg2, code_t pin19_ha
 // ---- Multiplier 6 -------------------------------------------------------------
 /// log2 × (n or ½), rounded to nearest to adder 8's format and wrapped to its width.
 inline code_t mul6(const Formats& f, code_t rom5_log2, code_t mux4_operand) {
-  const __int128 product = static_cast<__int128>(rom5_log2) * mux4_operand;
   const int shift = f.log2.frac_bits + f.mux4.frac_bits - f.reg9.frac_bits;
-  return wrap(f.reg9, static_cast<code_t>(round_shift(product, shift)));
+  code_t product, biased;
+  if (shift > 0 && !__builtin_mul_overflow(rom5_log2, mux4_operand, &product) &&
+      !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased))
+    return wrap(f.reg9, biased >> shift);  // 64 bits suffice (the default widths)
+  const __int128 wide = static_cast<__int128>(rom5_log2) * mux4_operand;
+  return wrap(f.reg9, static_cast<code_t>(round_shift(wide, shift)));
 }
 
 // ---- Inverter block 7 ----------------------------------------------------------
@@ -115,16 +138,14 @@ class Rom38Table {
 /// register 9 × K(n), rounded to nearest, saturated to the norm format (between the
 /// two passes register 9 holds up to ~16 000; that garbage saturates silently).
 inline code_t mul39(const Formats& f, code_t reg9, code_t rom38_k) {
-  const __int128 product = static_cast<__int128>(reg9) * rom38_k;
   const int shift = f.reg9.frac_bits + f.rom38.frac_bits - f.norm.frac_bits;
-  return saturate(f.norm, round_shift(product, shift));
+  return multiply_round_saturate(f.norm, reg9, rom38_k, shift);
 }
 
 // ---- Multipliers 13, 14, 15 ----------------------------------------------------
 /// K·A × intensity (register 10, 11 or 12), rounded and saturated to the pin format.
 inline code_t mul_rgb(const Formats& f, code_t norm39, code_t intensity) {
-  const __int128 product = static_cast<__int128>(norm39) * intensity;
-  return saturate(f.out, round_shift(product, f.norm.frac_bits - f.out.frac_bits));
+  return multiply_round_saturate(f.out, norm39, intensity, f.norm.frac_bits - f.out.frac_bits);
 }
 
 }  // namespace arith

@@ -1,6 +1,8 @@
 // A real-valued mirror of a code bus, for waveforms only.
 #pragma once
 
+#include <string>
+
 #include "specular/systemc.h"
 
 namespace specular {
@@ -19,5 +21,11 @@ class RealView : public sc_core::sc_module {
   FixedFormat format_;
   double value_ = 0.0;
 };
+
+/// Traces a code bus at its format's width. An unsigned format is traced as an
+/// unsigned value: SystemC's signed VCD writer prints x for a code at or above
+/// 2^(width-1), e.g. cos λ = 1.0 (65536) on the 17-bit U1.16 bus.
+void trace_bus(sc_core::sc_trace_file* file, const bus_signal& bus, const FixedFormat& format,
+               const std::string& name);
 
 }  // namespace specular

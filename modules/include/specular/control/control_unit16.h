@@ -34,7 +34,7 @@ class ControlUnit16 : public sc_core::sc_module {
 
   // Nets of Fig. 2, public so that tests and traces can watch them.
   wire logic_one{"logic_one", true};  ///< the "logic 1" source of Fig. 2
-  wire and40_y{"and40_y"};
+  wire and40_y{"and40_y", true};  ///< idle value: reset_n AND nand45 = 1
   wire inv44_y{"inv44_y", true};
   wire q41{"q41"}, q41_n{"q41_n", true};
   wire q42{"q42"}, q42_n{"q42_n", true};

@@ -51,6 +51,19 @@ SpecularDevice::SpecularDevice(sc_core::sc_module_name name, const Config& confi
   cu16.write37(write37);
   cu16.done35(pin35_done);
 
+  // Observer only: reports protocol misuse as SC_REPORT_WARNING (report_ids.h).
+  protocol_checker.start(pin27_start);
+  protocol_checker.clk(pin28_clk);
+  protocol_checker.reset_n(pin29_reset_n);
+  protocol_checker.load_n30(pin30_load_n);
+  protocol_checker.load_r31(pin31_load_r);
+  protocol_checker.load_g32(pin32_load_g);
+  protocol_checker.load_b33(pin33_load_b);
+  protocol_checker.done35(pin35_done);
+  protocol_checker.q41(cu16.q41);
+  protocol_checker.q42(cu16.q42);
+  protocol_checker.nand45(cu16.nand45_y);
+
   if (real_views) {
     const std::pair<const bus_signal*, const FixedFormat*> views[] = {
         {&reg1_q, &formats_.cos},        {&rom5_log2, &formats_.log2},
@@ -82,7 +95,7 @@ void SpecularDevice::trace(sc_core::sc_trace_file* file) const {
       {&reg11_q, &formats_.rgb},        {&reg12_q, &formats_.rgb},
       {&rom38_k, &formats_.rom38},      {&mul39_norm, &formats_.norm}};
   for (const auto& [bus, format] : buses)
-    sc_core::sc_trace(file, bus->read(), scope + bus->basename(), format->width());
+    trace_bus(file, *bus, *format, scope + bus->basename());
   sc_core::sc_trace(file, select36, scope + "select36");
   sc_core::sc_trace(file, write37, scope + "write37");
   for (const auto& view : real_views_)

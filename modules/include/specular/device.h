@@ -17,6 +17,7 @@
 #include "specular/datapath/register.h"
 #include "specular/datapath/rom38.h"
 #include "specular/datapath/rom5.h"
+#include "specular/protocol_checker.h"
 #include "specular/real_view.h"
 #include "specular/systemc.h"
 
@@ -87,6 +88,8 @@ class SpecularDevice : public sc_core::sc_module {
   Rom38 rom38;
   Multiplier39 mul39;
   ControlUnit16 cu16{"cu16"};
+  /// Watches the pins and control unit 16; reports protocol misuse (report_ids.h).
+  ProtocolChecker protocol_checker{"protocol_checker"};
 
   // ---- nets of Fig. 1, named after the block that drives them ----
   bus_signal reg1_q{"reg1_q"};

@@ -1,0 +1,223 @@
+#include "options.h"
+
+#include <map>
+#include <set>
+
+#include "input.h"
+#include "parse_values.h"
+#include "usage_error.h"
+
+namespace specular {
+namespace tb {
+
+namespace {
+
+/// Every option that takes a value, with what the value must be (for "missing value").
+const std::map<std::string, std::string>& valued_options() {
+  static const std::map<std::string, std::string> options = {
+      {"--cos", "a number in [0, 1]"},
+      {"--n", "an integer in [1, 1000]"},
+      {"--rgb", "R,G,B, each an integer in [0, 255]"},
+      {"--input", "a CSV file of lines cos,n,r,g,b"},
+      {"--random", "a count in [1, 100000000]"},
+      {"--seed", "an unsigned 64-bit integer"},
+      {"--model", "one of: " + model_names()},
+      {"--policy", "one of: patent, energy, none"},
+      {"--saturation", "one of: clamp, literal"},
+      {"--clock-period", "a time, a multiple of 4 ps in [4 ps, 1 ms], e.g. 10ns"},
+      {"--vcd", "a file name"},
+      {"--format", "one of: text, csv, json"},
+      {"--output", "a file name"},
+  };
+  return options;
+}
+
+std::string with_option(const std::string& option, const std::string& message) {
+  return option + ": " + message;
+}
+
+}  // namespace
+
+Options parse_options(const std::vector<std::string>& args) {
+  Options o;
+  const Formats formats(o.config.widths);
+  std::set<std::string> seen;
+
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string option = args[i];
+    std::string value;
+    bool has_value = false;
+    if (option.rfind("--", 0) == 0) {
+      const auto equals = option.find('=');
+      if (equals != std::string::npos) {
+        value = option.substr(equals + 1);
+        option = option.substr(0, equals);
+        has_value = true;
+      }
+    }
+    if (option == "--help" || option == "-h") {
+      o.help = true;
+      continue;
+    }
+    if (option == "--sweep") {
+      if (has_value) throw UsageError("--sweep takes no value (got '" + value + "')");
+    } else {
+      const auto known = valued_options().find(option);
+      if (known == valued_options().end())
+        throw UsageError("unknown option '" + args[i] + "' (see --help for the options)");
+      if (!has_value) {
+        if (i + 1 >= args.size())
+          throw UsageError("option " + option + " needs a value: " + known->second);
+        value = args[++i];
+      }
+    }
+    if (!seen.insert(option).second)
+      throw UsageError("option " + option + " is given more than once");
+
+    try {
+      if (option == "--cos") {
+        o.cos = parse_real(value, "cos", "[0, 1]");
+        quantise_cos(formats, o.cos);  // range check (NaN included)
+      } else if (option == "--n") {
+        o.n = parse_integer(value, "n", "[1, 1000]");
+        check_n(o.n);
+      } else if (option == "--rgb") {
+        o.rgb = parse_rgb_triplet(value, formats, "");
+        static const char* channels[3] = {"R", "G", "B"};
+        for (int ch = 0; ch < 3; ++ch) check_rgb(formats, o.rgb[ch], channels[ch]);
+      } else if (option == "--input") {
+        if (value.empty()) throw UsageError("the file name is empty");
+        o.input_path = value;
+      } else if (option == "--sweep") {
+        // no value
+      } else if (option == "--random") {
+        const std::string range = "[1, " + std::to_string(random_count_max) + "]";
+        const long long count = parse_integer(value, "N", range);
+        if (count < 1 || static_cast<unsigned long long>(count) > random_count_max)
+          throw UsageError("N = " + value + " is outside the allowed range " + range);
+        o.random_count = static_cast<std::size_t>(count);
+      } else if (option == "--seed") {
+        o.seed = parse_unsigned64(value, "seed");
+      } else if (option == "--model") {
+        o.model = parse_model(value);
+      } else if (option == "--policy") {
+        o.config.normalisation = parse_normalisation(value);
+      } else if (option == "--saturation") {
+        o.config.saturation = parse_saturation(value);
+      } else if (option == "--clock-period") {
+        o.clock_period_ps = parse_clock_period_ps(value);
+      } else if (option == "--vcd") {
+        if (value.empty()) throw UsageError("the file name is empty");
+        o.vcd_path = value;
+      } else if (option == "--format") {
+        o.format = parse_output_format(value);
+      } else if (option == "--output") {
+        if (value.empty()) throw UsageError("the file name is empty");
+        o.output_path = value;
+      }
+    } catch (const UsageError& e) {
+      const std::string message = e.what();
+      // Messages from the parsers already start with the option's name.
+      if (message.rfind(option, 0) == 0) throw;
+      throw UsageError(with_option(option, message));
+    } catch (const std::exception& e) {  // range checks and policy names of format.h
+      throw UsageError(with_option(option, e.what()));
+    }
+  }
+  if (o.help) return o;
+
+  // Exactly one source of computations.
+  const bool point = seen.count("--cos") || seen.count("--n");
+  const int sources = (point ? 1 : 0) + static_cast<int>(seen.count("--input")) +
+                      static_cast<int>(seen.count("--sweep")) + static_cast<int>(seen.count("--random"));
+  if (sources == 0)
+    throw UsageError(
+        "nothing to compute: give --cos C --n N [--rgb R,G,B], --input FILE, --sweep or --random N");
+  if (sources > 1)
+    throw UsageError(
+        "choose one of: --cos/--n (one point), --input FILE, --sweep, --random N");
+  if (point) {
+    o.stimulus = StimulusKind::point;
+    if (!seen.count("--cos")) throw UsageError("--n needs --cos C as well (cos in [0, 1])");
+    if (!seen.count("--n")) throw UsageError("--cos needs --n N as well (n in [1, 1000])");
+  } else if (seen.count("--input")) {
+    o.stimulus = StimulusKind::input;
+  } else if (seen.count("--sweep")) {
+    o.stimulus = StimulusKind::sweep;
+  } else {
+    o.stimulus = StimulusKind::random;
+  }
+  if (seen.count("--rgb") && (o.stimulus == StimulusKind::input || o.stimulus == StimulusKind::random))
+    throw UsageError("--rgb applies to --cos/--n and --sweep only (the file or the random draw gives R, G, B)");
+  if (seen.count("--seed") && o.stimulus != StimulusKind::random)
+    throw UsageError("--seed applies to --random N only");
+  if (!o.vcd_path.empty() && o.model != Model::pin)
+    throw UsageError("--vcd needs --model pin (the core model has no signals to trace)");
+  if (!o.vcd_path.empty() && !o.output_path.empty() && o.vcd_path == o.output_path)
+    throw UsageError("--vcd and --output name the same file '" + o.vcd_path + "'");
+  return o;
+}
+
+std::string help_text() {
+  return R"(specular_tb: drives the specular colour intensity device of UA 59965 U (Fig. 1-3)
+through its pins as an SoC would, and compares every result with the
+double-precision reference.
+
+Usage:
+  specular_tb --cos C --n N [--rgb R,G,B]   one computation (RGB default 255,255,255)
+  specular_tb --input FILE                  CSV lines cos,n,r,g,b ('#' comments, blank
+                                            lines and a header line cos,n,r,g,b allowed)
+  specular_tb --sweep [--rgb R,G,B]         every n in 1..1000 x a cos grid (below)
+  specular_tb --random N [--seed S]         N computations drawn at random (seed 1)
+
+Stimulus values:
+  cos in [0, 1] (quantised to register 1, U1.16), n an integer in [1, 1000],
+  R, G, B integers in [0, 255].
+  The --sweep grid: cos = every multiple of 2^-9 in [0, 1] (0 and 1 included) plus
+  the 512 codes just below 1 (1 - k*2^-16, k = 1..512), where the error is largest:
+  1021 values x 1000 n = 1,021,000 computations.
+  --random draws cos codes uniformly in [0, 2^16], n in 1..1000, R, G, B in 0..255
+  with a 64-bit Mersenne Twister; a seed gives the same draws on every platform.
+
+Model and device:
+  --model pin|core          pin (default): the pin-level SystemC netlist, driven on
+                            pins 17-35 (reset 29, load registers, start on 27, read
+                            24-26 at the rising edge of 35); cycles are measured.
+                            core: the kernel-free bit-accurate core (same arithmetic,
+                            no kernel, much faster); its cycles column is the spec's
+                            2.5 periods, the model's annotated latency, not a measurement.
+  --policy patent|energy|none   ROM 38 contents: 2pi/(n+2) (default), (n+2)/(2pi), 1
+  --saturation clamp|literal    second-pass result: saturate at 0 (default) or keep sign
+  --clock-period T          pin 28's period, e.g. 10ns (default), 2500ps, 1us; a multiple
+                            of 4 ps (inputs change a quarter period before an edge)
+                            in [4 ps, 1 ms]
+
+Output:
+  --format text|csv|json    text (default): a table and a summary (a sweep prints the
+                            summary only); csv: one row per computation, summary on
+                            standard error; json: {settings, results[], summary}
+  --output FILE             write there instead of standard output (written to a
+                            temporary file and renamed when complete)
+  --vcd FILE                pin model: write a VCD of every pin and net (time unit 1 ps);
+                            open it with waveforms/specular.gtkw. A sweep's VCD is huge:
+                            trace a point, a file or a short --random run.
+  --help                    this text
+
+Fields per computation (csv/json): cos, n, r, g, b, cos_q (register 1 as a real),
+  approx (register 9 after pass 2), approx_ref, norm (multiplier 39), norm_ref,
+  norm_exact (K(n)*cos_q^n), out_r, out_g, out_b (pins 24-26), out_r_ref, out_g_ref,
+  out_b_ref, cycles (start on 27 to the rising edge of 35, in clock periods), hex
+  codes at their bus widths (two's complement): reg1_hex, reg9_pass1_hex,
+  reg9_pass2_hex, pin24_hex, pin25_hex, pin26_hex; pass (1/0).
+
+Tolerances: |approx - approx_ref| <= 2^-10; |norm - norm_ref| <= 2^-10*max(1,K);
+  |out - out_ref| <= 2^-10*max(1,K)*I + 1 output LSB; cycles = 2.5.
+
+Exit status: 0 every computation within tolerance; 1 some computation out of
+  tolerance; 2 bad option, value, input file or output path (nothing is run);
+  3 internal error.
+)";
+}
+
+}  // namespace tb
+}  // namespace specular

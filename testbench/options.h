@@ -1,0 +1,48 @@
+// The command line of specular_tb: parsing and checking every option before any
+// SystemC object exists.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "report.h"
+#include "run_models.h"
+
+namespace specular {
+namespace tb {
+
+/// Where the computations come from (exactly one per run).
+enum class StimulusKind { point, input, sweep, random };
+
+/// Largest --random count: the run streams, so this only bounds the run time.
+constexpr std::size_t random_count_max = 100000000;
+
+struct Options {
+  bool help = false;
+  StimulusKind stimulus = StimulusKind::point;
+  double cos = 0;                                  ///< --cos (checked: [0, 1])
+  long long n = 0;                                 ///< --n (checked: [1, 1000])
+  std::array<long long, 3> rgb{255, 255, 255};     ///< --rgb (default full scale)
+  std::string input_path;                          ///< --input
+  std::size_t random_count = 0;                    ///< --random N
+  std::uint64_t seed = 1;                          ///< --seed S
+  Model model = Model::pin;                        ///< --model
+  Config config{};                                 ///< --policy, --saturation
+  std::uint64_t clock_period_ps = 10000;           ///< --clock-period (10 ns)
+  std::string vcd_path;                            ///< --vcd (pin model only)
+  OutputFormat format = OutputFormat::text;        ///< --format
+  std::string output_path;                         ///< --output; empty = standard output
+};
+
+/// Parses argv[1..] (without the program name). Throws UsageError with a message
+/// that names the option, the bad value and what is allowed.
+Options parse_options(const std::vector<std::string>& args);
+
+/// The --help text.
+std::string help_text();
+
+}  // namespace tb
+}  // namespace specular

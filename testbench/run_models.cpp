@@ -1,0 +1,143 @@
+#include "run_models.h"
+
+#include <exception>
+#include <iostream>
+#include <memory>
+
+#include "specular/pin_harness.h"
+#include "usage_error.h"
+
+namespace specular {
+namespace tb {
+
+const char* to_string(Model model) {
+  switch (model) {
+    case Model::pin: return "pin";
+    case Model::core: return "core";
+  }
+  return "?";
+}
+
+std::string model_names() { return "pin, core"; }
+
+Model parse_model(const std::string& text) {
+  if (text == "pin") return Model::pin;
+  if (text == "core") return Model::core;
+  throw UsageError("--model = '" + text + "' is not one of: " + model_names());
+}
+
+namespace {
+
+/// SystemC prints its reports on standard output, where they would break a CSV or
+/// JSON report: warnings and errors go to standard error instead, and the kernel's
+/// informational chatter ("simulation stopped by user", …) is dropped.
+void kernel_reports_to_stderr(const sc_core::sc_report& report, const sc_core::sc_actions& actions) {
+  if (report.get_severity() == sc_core::SC_INFO) return;
+  if (actions & sc_core::SC_DISPLAY)
+    std::cerr << sc_core::sc_report_compose_message(report) << std::endl;
+  sc_core::sc_report_handler::default_handler(report, actions & ~sc_core::SC_DISPLAY);
+}
+
+/// The bus-functional side of the pin model: an SC_THREAD that resets the device,
+/// then feeds it batch after batch through the harness and stops the kernel.
+class PinDriver : public sc_core::sc_module {
+ public:
+  PinDriver(sc_core::sc_module_name name, PinHarness& harness, const OperandSource& source,
+            const ResultSink& sink, std::size_t chunk_size)
+      : sc_module(name), harness_(harness), source_(source), sink_(sink), chunk_size_(chunk_size) {
+    SPECULAR_HAS_PROCESS(PinDriver);
+    SC_THREAD(drive);
+  }
+
+  /// What went wrong inside the thread (a sink that cannot write, …), rethrown by
+  /// run_operations once the kernel has stopped.
+  std::exception_ptr failure;
+
+ private:
+  void drive() {
+    try {
+      harness_.reset();
+      std::vector<Operands> chunk;
+      std::vector<Result> results;
+      chunk.reserve(chunk_size_);
+      while (source_(chunk, chunk_size_)) {
+        harness_.run_batch(chunk, results);
+        sink_(chunk, results, harness_.cycles());
+      }
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    sc_core::sc_stop();
+  }
+
+  PinHarness& harness_;
+  const OperandSource& source_;
+  const ResultSink& sink_;
+  std::size_t chunk_size_;
+};
+
+void run_pin_model(const RunSettings& settings, const OperandSource& source,
+                   const ResultSink& sink) {
+  sc_core::sc_report_handler::set_handler(kernel_reports_to_stderr);
+  const bool tracing = !settings.vcd_base.empty();
+  const sc_core::sc_time period(static_cast<double>(settings.clock_period_ps), sc_core::SC_PS);
+  // Real-valued views cost a process activation per bus change: only when tracing.
+  PinHarness harness("tb", settings.config, period, /*real_views=*/tracing);
+  PinDriver driver("driver", harness, source, sink, settings.chunk_size);
+
+  sc_core::sc_trace_file* vcd = nullptr;
+  if (tracing) {
+    vcd = sc_core::sc_create_vcd_trace_file(settings.vcd_base.c_str());
+    vcd->set_time_unit(1, sc_core::SC_PS);
+    harness.trace(vcd);
+  }
+  sc_core::sc_start();
+  if (vcd != nullptr) sc_core::sc_close_vcd_trace_file(vcd);
+  if (driver.failure) std::rethrow_exception(driver.failure);
+}
+
+void run_core_model(const RunSettings& settings, const OperandSource& source,
+                    const ResultSink& sink) {
+  const Core core(settings.config);
+  std::vector<Operands> chunk;
+  std::vector<Result> results;
+  std::vector<double> cycles;
+  chunk.reserve(settings.chunk_size);
+  while (source(chunk, settings.chunk_size)) {
+    results.resize(chunk.size());
+    for (std::size_t i = 0; i < chunk.size(); ++i) results[i] = core.run(chunk[i]);
+    cycles.assign(chunk.size(), spec_latency_cycles);  // annotated, not measured
+    sink(chunk, results, cycles);
+  }
+}
+
+}  // namespace
+
+void run_operations(const RunSettings& settings, const OperandSource& source,
+                    const ResultSink& sink) {
+  switch (settings.model) {
+    case Model::pin: return run_pin_model(settings, source, sink);
+    case Model::core: return run_core_model(settings, source, sink);
+  }
+}
+
+void run_operations(const RunSettings& settings, const std::vector<Operands>& operations,
+                    std::vector<Result>& results, std::vector<double>& cycles) {
+  results.clear();
+  cycles.clear();
+  std::size_t position = 0;
+  const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
+    chunk.clear();
+    while (chunk.size() < max && position < operations.size()) chunk.push_back(operations[position++]);
+    return !chunk.empty();
+  };
+  const ResultSink sink = [&](const std::vector<Operands>&, const std::vector<Result>& r,
+                              const std::vector<double>& c) {
+    results.insert(results.end(), r.begin(), r.end());
+    cycles.insert(cycles.end(), c.begin(), c.end());
+  };
+  run_operations(settings, source, sink);
+}
+
+}  // namespace tb
+}  // namespace specular

@@ -1,0 +1,61 @@
+// The one place that knows how to run operations on each model of the device.
+//
+// Adding a model (e.g. the TLM one) means one enum value, one name in
+// model_names(), and one case in run_operations().
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "specular/core.h"
+
+namespace specular {
+namespace tb {
+
+enum class Model {
+  pin,   ///< the pin-level SystemC netlist, driven through PinHarness (default)
+  core,  ///< the kernel-free bit-accurate core; latency annotated from the spec
+};
+
+const char* to_string(Model model);
+/// "pin" or "core"; throws UsageError naming the value and the choices.
+Model parse_model(const std::string& text);
+/// "pin, core": the choices, for messages and --help.
+std::string model_names();
+
+/// The spec's timing table: start → rising edge of 35 in clock periods. The core
+/// model has no clock; it reports this as its annotated latency.
+constexpr double spec_latency_cycles = 2.5;
+
+/// How to run: which model, the device's configuration, the clock, tracing.
+struct RunSettings {
+  Model model = Model::pin;
+  Config config{};
+  std::uint64_t clock_period_ps = 10000;  ///< pin model: period of pin 28
+  std::string vcd_base;          ///< pin model: VCD file name without ".vcd"; empty = no trace
+  std::size_t chunk_size = 4096;  ///< operations per batch (memory stays flat)
+};
+
+/// Replaces `chunk` with up to `max` next operations; returns false when none are left.
+using OperandSource = std::function<bool(std::vector<Operands>& chunk, std::size_t max)>;
+/// Receives each batch: operands, the results (codes), and cycles (start → 35↑).
+using ResultSink = std::function<void(const std::vector<Operands>& chunk,
+                                      const std::vector<Result>& results,
+                                      const std::vector<double>& cycles)>;
+
+/// Runs every operation `source` yields on the chosen model, in batches of at most
+/// `settings.chunk_size`, handing each batch's results to `sink` in order.
+/// The pin model elaborates a design and runs the SystemC kernel, which can be done
+/// once per process. Exceptions from `source` or `sink` propagate to the caller.
+void run_operations(const RunSettings& settings, const OperandSource& source,
+                    const ResultSink& sink);
+
+/// Convenience form for a list that fits in memory.
+void run_operations(const RunSettings& settings, const std::vector<Operands>& operations,
+                    std::vector<Result>& results, std::vector<double>& cycles);
+
+}  // namespace tb
+}  // namespace specular

@@ -1,0 +1,71 @@
+#include "scoreboard.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "run_models.h"
+
+namespace specular {
+namespace tb {
+
+void Worst::consider(double err, double tolerance, const Comparison& c) {
+  if (n == 0 || err > error) {
+    error = err;
+    cos_q = c.ref.cos_q;
+    n = c.stimulus.n;
+  }
+  if (tolerance > 0) tolerance_used = std::max(tolerance_used, err / tolerance);
+}
+
+Scoreboard::Scoreboard(const Config& config) : config_(config), formats_(config.widths) {}
+
+Comparison Scoreboard::compare(const Stimulus& stimulus, const Result& result,
+                               double cycles) const {
+  Comparison c;
+  c.stimulus = stimulus;
+  c.result = result;
+  c.cycles = cycles;
+  const double cos_q = formats_.cos.to_real(result.reg1);
+  const std::array<double, 3> rgb{double(stimulus.rgb[0]), double(stimulus.rgb[1]),
+                                  double(stimulus.rgb[2])};
+  c.ref = reference::evaluate(cos_q, stimulus.n, rgb, config_.normalisation, config_.saturation,
+                              formats_.cos.frac_bits);
+  c.k = reference::k(stimulus.n, config_.normalisation);
+  c.approx = formats_.reg9.to_real(result.reg9_pass2);
+  c.norm = formats_.norm.to_real(result.norm39);
+  for (int ch = 0; ch < 3; ++ch) c.out[ch] = formats_.out.to_real(result.out[ch]);
+
+  // Register 1 must hold the code the stimulus asked for, or the reference above
+  // would be computed on the wrong input.
+  const bool reg1_ok = result.reg1 == stimulus.operands.cos;
+  c.approx_ok = reg1_ok && std::abs(c.approx - c.ref.approx_ref) <= reference::approx_tolerance();
+  c.norm_ok = reg1_ok && std::abs(c.norm - c.ref.norm_ref) <= reference::norm_tolerance(c.k);
+  c.out_ok = reg1_ok;
+  for (int ch = 0; ch < 3; ++ch)
+    c.out_ok = c.out_ok && std::abs(c.out[ch] - c.ref.out_ref[ch]) <=
+                               reference::out_tolerance(c.k, rgb[ch], formats_.out.lsb());
+  c.cycles_ok = cycles == spec_latency_cycles;
+  return c;
+}
+
+void Scoreboard::record(const Comparison& c) {
+  Summary& s = summary_;
+  if (s.count == 0) s.cycles_min = s.cycles_max = c.cycles;
+  ++s.count;
+  if (!c.pass()) ++s.failures;
+  if (!c.approx_ok) ++s.approx_failures;
+  if (!c.norm_ok) ++s.norm_failures;
+  if (!c.out_ok) ++s.out_failures;
+  if (!c.cycles_ok) ++s.cycles_failures;
+  s.approx.consider(std::abs(c.approx - c.ref.approx_ref), reference::approx_tolerance(), c);
+  s.norm.consider(std::abs(c.norm - c.ref.norm_ref), reference::norm_tolerance(c.k), c);
+  s.norm_exact.consider(std::abs(c.norm - c.ref.norm_exact), 0.0, c);
+  for (int ch = 0; ch < 3; ++ch)
+    s.out.consider(std::abs(c.out[ch] - c.ref.out_ref[ch]),
+                   reference::out_tolerance(c.k, c.stimulus.rgb[ch], formats_.out.lsb()), c);
+  s.cycles_min = std::min(s.cycles_min, c.cycles);
+  s.cycles_max = std::max(s.cycles_max, c.cycles);
+}
+
+}  // namespace tb
+}  // namespace specular

@@ -1,0 +1,138 @@
+#include "testbench.h"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+
+#include "input.h"
+#include "options.h"
+#include "output_file.h"
+#include "report.h"
+#include "run_models.h"
+#include "scoreboard.h"
+#include "usage_error.h"
+
+namespace specular {
+namespace tb {
+
+namespace {
+
+struct Plan {
+  std::unique_ptr<StimulusSource> source;
+  std::string description;  // for the report header
+};
+
+Plan make_plan(const Options& o, const Formats& formats) {
+  Plan plan;
+  switch (o.stimulus) {
+    case StimulusKind::point:
+      plan.source = std::make_unique<ListSource>(
+          std::vector<Stimulus>{make_stimulus(formats, o.cos, o.n, o.rgb, "--cos/--n/--rgb")});
+      plan.description = "--cos/--n/--rgb";
+      break;
+    case StimulusKind::input:
+      plan.source = std::make_unique<ListSource>(read_stimuli_file(o.input_path, formats));
+      plan.description = "--input " + o.input_path;
+      break;
+    case StimulusKind::sweep: {
+      const Stimulus any = make_stimulus(formats, 1.0, 1, o.rgb, "--rgb");
+      plan.source = std::make_unique<SweepSource>(formats, any.rgb);
+      plan.description = "--sweep";
+      break;
+    }
+    case StimulusKind::random:
+      plan.source = std::make_unique<RandomSource>(formats, o.random_count, o.seed);
+      plan.description =
+          "--random " + std::to_string(o.random_count) + " --seed " + std::to_string(o.seed);
+      break;
+  }
+  return plan;
+}
+
+std::string strip_vcd_suffix(const std::string& path) {
+  const std::string suffix = ".vcd";
+  if (path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0)
+    return path.substr(0, path.size() - suffix.size());
+  return path;
+}
+
+int run(const Options& o, std::ostream& out, std::ostream& err) {
+  // Everything that can be wrong with the user's request is found here, before the
+  // model is built: the stimuli (a file is read in full) and both output paths.
+  const Formats formats(o.config.widths);
+  Plan plan = make_plan(o, formats);
+  std::optional<AtomicOutputStream> output_file;
+  if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");
+  std::optional<AtomicFile> vcd_file;
+  // SystemC's VCD writer appends ".vcd" to the name it is given.
+  if (!o.vcd_path.empty()) vcd_file.emplace(o.vcd_path, "--vcd", ".vcd");
+
+  RunSettings settings;
+  settings.model = o.model;
+  settings.config = o.config;
+  settings.clock_period_ps = o.clock_period_ps;
+  if (vcd_file) settings.vcd_base = strip_vcd_suffix(vcd_file->temp_path());
+
+  std::ostream& report_stream = output_file ? output_file->stream() : out;
+  const std::unique_ptr<Report> report = make_report(o.format, report_stream, err);
+  RunDescription description;
+  description.model = to_string(o.model);
+  description.stimulus = plan.description;
+  description.config = o.config;
+  description.clock_period_ps = o.clock_period_ps;
+  description.operations = plan.source->size();
+  description.text_rows = o.stimulus != StimulusKind::sweep;
+  report->begin(description);
+
+  Scoreboard scoreboard(o.config);
+  std::vector<Stimulus> stimuli;  // the chunk in flight, aligned with its operands
+  const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
+    chunk.clear();
+    if (!plan.source->next(stimuli, max)) return false;
+    for (const Stimulus& s : stimuli) chunk.push_back(s.operands);
+    return true;
+  };
+  const ResultSink sink = [&](const std::vector<Operands>&, const std::vector<Result>& results,
+                              const std::vector<double>& cycles) {
+    for (std::size_t i = 0; i < results.size(); ++i) {
+      const Comparison c = scoreboard.compare(stimuli[i], results[i], cycles[i]);
+      scoreboard.record(c);
+      report->row(c);
+    }
+    if (!report_stream) throw UsageError("cannot write the report (disk full?)");
+  };
+
+  const auto started = std::chrono::steady_clock::now();
+  run_operations(settings, source, sink);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  report->end(scoreboard.summary(), seconds);
+  report_stream.flush();
+  if (!report_stream) throw UsageError("cannot write the report (disk full?)");
+
+  if (output_file) output_file->commit();
+  if (vcd_file) vcd_file->commit();
+  return scoreboard.summary().pass() ? exit_pass : exit_out_of_tolerance;
+}
+
+}  // namespace
+
+int run_testbench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  try {
+    const Options options = parse_options(args);
+    if (options.help) {
+      out << help_text();
+      return exit_pass;
+    }
+    return run(options, out, err);
+  } catch (const UsageError& e) {
+    err << "specular_tb: error: " << e.what() << "\n(specular_tb --help lists the options)\n";
+    return exit_usage;
+  } catch (const std::exception& e) {
+    err << "specular_tb: internal error: " << e.what() << '\n';
+    return exit_internal;
+  }
+}
+
+}  // namespace tb
+}  // namespace specular

@@ -1,0 +1,36 @@
+// Command line of specular_study, and the sampling each stage uses (full or quick).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace specular {
+namespace study {
+
+/// A bad command line; main() prints the message and the usage and exits with 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct StudyOptions {
+  std::string out_dir = "study-output";  ///< where the CSV files go
+  bool quick = false;                    ///< a few n and coarse grids: seconds, for tests
+  unsigned workers = 2;                  ///< worker threads
+  bool help = false;
+
+  /// Every n the per-n stages visit: 1 … 1000, or a handful in quick mode.
+  std::vector<unsigned> n_values() const;
+  /// The exponents the error curves and the sphere renders show.
+  static std::vector<unsigned> curve_n_values();   ///< 1, 2, 5, 10, 50, 100, 500, 1000
+  static std::vector<unsigned> sphere_n_values();  ///< 1, 10, 100, 1000
+};
+
+/// Parses argv; throws UsageError naming the bad argument and what is allowed.
+StudyOptions parse_study_options(int argc, const char* const* argv);
+
+/// The usage text (--help).
+std::string study_usage();
+
+}  // namespace study
+}  // namespace specular

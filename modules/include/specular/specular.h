@@ -7,3 +7,8 @@
 #include "specular/format.h"
 #include "specular/pin_harness.h"
 #include "specular/reference.h"
+#include "specular/tlm/driver.h"
+#include "specular/tlm/lt_target.h"
+#include "specular/tlm/pin_target.h"
+#include "specular/tlm/register_map.h"
+#include "specular/tlm/target.h"

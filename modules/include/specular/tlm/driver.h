@@ -1,0 +1,81 @@
+// Software's view of the IP: what a CPU's driver does over the bus, for initiators
+// (the testbench, the example virtual platform, users' platforms).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include <tlm>
+#include <tlm_utils/tlm_quantumkeeper.h>
+
+#include "specular/core.h"
+#include "specular/tlm/register_map.h"
+
+namespace specular {
+
+/// A refused transaction: names the access, the TLM response and STATUS's cause.
+class TransportError : public std::runtime_error {
+ public:
+  TransportError(const std::string& what, tlm::tlm_response_status status, ErrorCause cause)
+      : std::runtime_error(what), status_(status), cause_(cause) {}
+  tlm::tlm_response_status status() const { return status_; }
+  ErrorCause cause() const { return cause_; }
+
+ private:
+  tlm::tlm_response_status status_;
+  ErrorCause cause_;
+};
+
+/// Register accesses through an initiator port (e.g. a tlm_utils::simple_initiator_socket)
+/// with loosely-timed temporal decoupling: every transaction runs at the quantum
+/// keeper's local time, and the keeper synchronises when its quantum is used up.
+/// Call from an SC_THREAD. One generic payload is reused: no allocation per access.
+class SpecularDriver {
+ public:
+  using port_type = sc_core::sc_port_b<tlm::tlm_fw_transport_if<>>;
+
+  /// `base`: the IP's address on the bus behind `port`.
+  SpecularDriver(port_type& port, std::uint64_t base, tlm_utils::tlm_quantumkeeper& keeper);
+
+  std::uint32_t read(Reg reg);
+  void write(Reg reg, std::uint32_t value);
+  /// Bursts of whole words at a byte offset from the base (e.g. the batch windows).
+  void read_words(std::uint32_t offset, std::uint32_t* words, std::size_t count);
+  void write_words(std::uint32_t offset, const std::uint32_t* words, std::size_t count);
+
+  /// One operation through the registers: N, R, G, B (those that changed since the
+  /// driver last wrote them), COS, START, then OUT_R, OUT_G, OUT_B.
+  std::array<std::int32_t, 3> compute(const Operands& in);
+  /// As compute(), and reads the inspection registers too: every field of Result.
+  Result compute_inspected(const Operands& in);
+  /// `count` operations sharing n and R, G, B, through BATCH_COS and BATCH_OUT
+  /// (BATCH_CAPACITY per transaction pair). out[3i..3i+2] = pins 24–26 of op i.
+  void compute_batch(code_t n, const std::array<code_t, 3>& rgb, const std::uint32_t* cos,
+                     std::size_t count, std::int32_t* out);
+
+  /// Start → results of the last compute*() call as the initiator saw it: the
+  /// START (or BATCH_COS) writes' annotated delay plus any time the target waited.
+  const sc_core::sc_time& operation_duration() const { return operation_duration_; }
+  tlm_utils::tlm_quantumkeeper& keeper() { return keeper_; }
+
+ private:
+  void transport(tlm::tlm_command command, std::uint32_t offset, unsigned char* data,
+                 unsigned length);
+  void load_shared(code_t n, const std::array<code_t, 3>& rgb);
+  [[noreturn]] void fail(tlm::tlm_command command, std::uint32_t offset, unsigned length);
+
+  port_type& port_;
+  std::uint64_t base_;
+  tlm_utils::tlm_quantumkeeper& keeper_;
+  tlm::tlm_generic_payload tx_;
+  sc_core::sc_time last_duration_;  ///< of the last transaction
+  sc_core::sc_time operation_duration_;
+  bool shared_loaded_ = false;
+  code_t loaded_n_ = 0;
+  std::array<code_t, 3> loaded_rgb_{};
+};
+
+}  // namespace specular

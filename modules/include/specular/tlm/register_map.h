@@ -1,0 +1,198 @@
+// The register map of the TLM-2.0 target, written once as a table (VCML style:
+// name, offset, access, reset value, description on one line).
+//
+// Everything else reads this table: the target decodes addresses with it, the
+// driver takes offsets from it, docs/tlm.md prints it (a test keeps them equal).
+// Registers are 32 bits wide; data travels in the host's byte order, as the TLM-2.0
+// generic payload's data array does.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "specular/core.h"
+
+namespace specular {
+
+/// What a bus access may do to a register.
+enum class Access : std::uint8_t {
+  read_only,         ///< writes get TLM_COMMAND_ERROR_RESPONSE
+  read_write,        ///< plain storage (values are range-checked on write)
+  write_1_to_clear,  ///< reads state; writing 1 to a flag clears it (STATUS)
+  self_clearing,     ///< a write acts (START); reads return 0
+};
+
+const char* to_string(Access access);
+
+/// Index of every row of the table; the row's position equals its index.
+enum class Reg : std::uint8_t {
+  id,
+  version,
+  config,
+  status,
+  control,
+  batch_capacity,
+  error_address,
+  cos,
+  n,
+  r,
+  g,
+  b,
+  out_r,
+  out_g,
+  out_b,
+  reg1,
+  reg9_pass1_lo,
+  reg9_pass1_hi,
+  reg9_pass2_lo,
+  reg9_pass2_hi,
+  rom38_k,
+  norm39,
+  batch_cos,  ///< window: one cos code per operation
+  batch_out,  ///< window: three output codes (R, G, B) per operation
+  count
+};
+
+constexpr std::size_t register_count = static_cast<std::size_t>(Reg::count);
+constexpr std::size_t index_of(Reg reg) { return static_cast<std::size_t>(reg); }
+
+/// One row of the register map.
+struct RegisterInfo {
+  Reg reg;
+  const char* name;
+  std::uint32_t offset;  ///< byte offset from the target's base address
+  std::uint32_t words;   ///< 1 for a register, more for a window (burst-accessible)
+  Access access;
+  std::uint32_t reset;   ///< value after construction
+  const char* description;
+
+  constexpr std::uint32_t end() const { return offset + 4 * words; }
+};
+
+/// Operations per batch transaction: the BATCH_COS window holds this many cos codes,
+/// BATCH_OUT three times as many output codes.
+constexpr std::uint32_t batch_capacity = 1024;
+
+/// Identification: the patent number, readable in a hex dump (UA 59965 U).
+constexpr std::uint32_t device_id = 0x00059965;
+/// Register map version, major << 16 | minor. Bump major on incompatible changes.
+constexpr std::uint32_t map_version = 0x00010000;
+
+// ---- STATUS fields ----------------------------------------------------------------
+namespace status_bits {
+constexpr std::uint32_t busy = 1u << 0;   ///< an operation is in flight (pin model only)
+constexpr std::uint32_t done = 1u << 1;   ///< results valid; W1C; drives the done IRQ
+constexpr std::uint32_t error = 1u << 2;  ///< an access was refused; W1C (clears cause too)
+constexpr int cause_shift = 8;            ///< bits 15:8: ErrorCause of the last refusal
+constexpr std::uint32_t cause_mask = 0xFFu << cause_shift;
+}  // namespace status_bits
+
+// ---- CONTROL fields ---------------------------------------------------------------
+namespace control_bits {
+constexpr std::uint32_t start = 1u << 0;  ///< run one operation on COS, N, R, G, B
+constexpr std::uint32_t defined = start;  ///< writing any other bit is refused
+}  // namespace control_bits
+
+// ---- CONFIG fields (read-only, fixed at construction like ROM 38's contents) ------
+namespace config_bits {
+constexpr int normalisation_shift = 0;  ///< bits 1:0: 0 patent, 1 energy, 2 none
+constexpr int saturation_shift = 4;     ///< bit 4: 0 clamp, 1 literal
+constexpr int cos_frac_shift = 8;       ///< bits 15:8: fraction bits of COS (U1.F)
+constexpr int out_frac_shift = 16;      ///< bits 23:16: fraction bits of OUT_* (signed)
+constexpr int rgb_bits_shift = 24;      ///< bits 31:24: width of R, G, B
+}  // namespace config_bits
+
+/// The CONFIG word for a configuration.
+constexpr std::uint32_t config_word(Normalisation normalisation, Saturation saturation,
+                                    int cos_frac_bits, int out_frac_bits, int rgb_bits) {
+  return (static_cast<std::uint32_t>(normalisation) << config_bits::normalisation_shift) |
+         (static_cast<std::uint32_t>(saturation) << config_bits::saturation_shift) |
+         (static_cast<std::uint32_t>(cos_frac_bits) << config_bits::cos_frac_shift) |
+         (static_cast<std::uint32_t>(out_frac_bits) << config_bits::out_frac_shift) |
+         (static_cast<std::uint32_t>(rgb_bits) << config_bits::rgb_bits_shift);
+}
+std::uint32_t config_word(const Config& config);
+
+/// Why the last access was refused (STATUS bits 15:8).
+enum class ErrorCause : std::uint8_t {
+  none = 0,
+  cos_out_of_range = 1,  ///< COS / BATCH_COS word above 1.0 (65536 for U1.16)
+  n_out_of_range = 2,    ///< N outside 1..1000
+  rgb_out_of_range = 3,  ///< R, G or B above 255 (the RGB format's maximum)
+  read_only = 4,         ///< write to a read-only register
+  reserved_bits = 5,     ///< CONTROL written with an undefined bit set
+  busy = 6,              ///< START or operand write while an operation is in flight
+  address = 7,           ///< unmapped or misaligned address, or a burst past a window
+  burst = 8,             ///< length not a multiple of 4, burst on a register, streaming
+  byte_enable = 9,       ///< byte enables other than "all bytes"
+  command = 10,          ///< a command other than read, write, ignore
+};
+
+const char* to_string(ErrorCause cause);
+/// What the cause means, for docs and error messages.
+const char* describe(ErrorCause cause);
+constexpr std::uint8_t error_cause_count = 11;
+
+/// THE register map. Offsets are bytes from the base address.
+inline constexpr std::array<RegisterInfo, register_count> register_map{{
+    // clang-format off
+    {Reg::id,             "ID",             0x000, 1, Access::read_only,        device_id,   "Identification: 0x00059965 (patent UA 59965 U)"},
+    {Reg::version,        "VERSION",        0x004, 1, Access::read_only,        map_version, "Register map version, major << 16 | minor"},
+    {Reg::config,         "CONFIG",         0x008, 1, Access::read_only,        config_word(Normalisation::patent, Saturation::clamp, 16, 13, 8),
+                                                                                             "[1:0] normalisation (0 patent, 1 energy, 2 none), [4] saturation (0 clamp, 1 literal), [15:8] COS fraction bits, [23:16] OUT fraction bits, [31:24] RGB bits; fixed at construction (reset shown for the defaults)"},
+    {Reg::status,         "STATUS",         0x00C, 1, Access::write_1_to_clear, 0,           "[0] busy, [1] done (W1C, drives done_irq), [2] error (W1C, clears cause and ERROR_ADDRESS), [15:8] error cause"},
+    {Reg::control,        "CONTROL",        0x010, 1, Access::self_clearing,    0,           "[0] START: run one operation on COS, N, R, G, B; other bits refused; reads 0"},
+    {Reg::batch_capacity, "BATCH_CAPACITY", 0x014, 1, Access::read_only,        batch_capacity, "Operations per batch transaction (BATCH_COS words)"},
+    {Reg::error_address,  "ERROR_ADDRESS",  0x018, 1, Access::read_only,        0,           "Byte offset of the last refused access (the offending word in a burst)"},
+    {Reg::cos,            "COS",            0x020, 1, Access::read_write,       0,           "cos λ code, U1.16: 0..65536 (= 1.0); larger is refused"},
+    {Reg::n,              "N",              0x024, 1, Access::read_write,       1,           "Specular exponent n: 1..1000; other values are refused"},
+    {Reg::r,              "R",              0x028, 1, Access::read_write,       0,           "Light intensity R (register 10): 0..255"},
+    {Reg::g,              "G",              0x02C, 1, Access::read_write,       0,           "Light intensity G (register 11): 0..255"},
+    {Reg::b,              "B",              0x030, 1, Access::read_write,       0,           "Light intensity B (register 12): 0..255"},
+    {Reg::out_r,          "OUT_R",          0x040, 1, Access::read_only,        0,           "Pin 24: K·A·R, S18.13 two's complement"},
+    {Reg::out_g,          "OUT_G",          0x044, 1, Access::read_only,        0,           "Pin 25: K·A·G, S18.13 two's complement"},
+    {Reg::out_b,          "OUT_B",          0x048, 1, Access::read_only,        0,           "Pin 26: K·A·B, S18.13 two's complement"},
+    {Reg::reg1,           "REG1",           0x050, 1, Access::read_only,        0,           "Inspection: register 1 (cos code used) of the last operation"},
+    {Reg::reg9_pass1_lo,  "REG9_PASS1_LO",  0x054, 1, Access::read_only,        0,           "Inspection: register 9 after pass 1, S14.22, bits 31:0"},
+    {Reg::reg9_pass1_hi,  "REG9_PASS1_HI",  0x058, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
+    {Reg::reg9_pass2_lo,  "REG9_PASS2_LO",  0x05C, 1, Access::read_only,        0,           "Inspection: register 9 after pass 2 (A), S14.22, bits 31:0"},
+    {Reg::reg9_pass2_hi,  "REG9_PASS2_HI",  0x060, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
+    {Reg::rom38_k,        "ROM38_K",        0x064, 1, Access::read_only,        0,           "Inspection: ROM 38 word K(n), U8.16"},
+    {Reg::norm39,         "NORM39",         0x068, 1, Access::read_only,        0,           "Inspection: multiplier 39 output K·A, S10.20"},
+    {Reg::batch_cos,      "BATCH_COS",      0x1000, batch_capacity, Access::read_write, 0,   "Batch window: a burst write of k cos codes at word i runs k operations (N, R, G, B shared), results to BATCH_OUT word 3i"},
+    {Reg::batch_out,      "BATCH_OUT",      0x4000, 3 * batch_capacity, Access::read_only, 0, "Batch results: OUT_R, OUT_G, OUT_B of operation i at words 3i, 3i+1, 3i+2"},
+    // clang-format on
+}};
+
+/// Bytes the target decodes from its base address (a router's window size).
+constexpr std::uint32_t map_size = 0x8000;
+
+constexpr const RegisterInfo& info(Reg reg) { return register_map[index_of(reg)]; }
+constexpr std::uint32_t offset_of(Reg reg) { return info(reg).offset; }
+
+namespace detail {
+constexpr bool map_is_consistent() {
+  for (std::size_t i = 0; i < register_count; ++i) {
+    const RegisterInfo& row = register_map[i];
+    if (index_of(row.reg) != i) return false;                         // row order = enum order
+    if (row.offset % 4 != 0 || row.words == 0) return false;          // word-aligned
+    if (i > 0 && row.offset < register_map[i - 1].end()) return false;  // sorted, no overlap
+    if (row.end() > map_size) return false;
+  }
+  return true;
+}
+}  // namespace detail
+static_assert(detail::map_is_consistent(),
+              "register_map rows must follow Reg's order, be word-aligned and not overlap");
+
+/// The row whose range holds `offset`, or nullptr (unmapped or not word-aligned).
+const RegisterInfo* decode(std::uint64_t offset);
+
+/// The register map as a Markdown table (docs/tlm.md carries exactly this).
+std::string register_map_markdown();
+/// The error causes as a Markdown table.
+std::string error_cause_markdown();
+
+}  // namespace specular

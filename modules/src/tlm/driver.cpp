@@ -1,0 +1,139 @@
+#include "specular/tlm/driver.h"
+
+#include <algorithm>
+#include <cstring>
+#include <sstream>
+
+namespace specular {
+
+using sc_core::sc_time;
+
+SpecularDriver::SpecularDriver(port_type& port, std::uint64_t base,
+                               tlm_utils::tlm_quantumkeeper& keeper)
+    : port_(port), base_(base), keeper_(keeper) {}
+
+void SpecularDriver::transport(tlm::tlm_command command, std::uint32_t offset,
+                               unsigned char* data, unsigned length) {
+  tx_.set_command(command);
+  tx_.set_address(base_ + offset);
+  tx_.set_data_ptr(data);
+  tx_.set_data_length(length);
+  tx_.set_streaming_width(length);
+  tx_.set_byte_enable_ptr(nullptr);
+  tx_.set_byte_enable_length(0);
+  tx_.set_dmi_allowed(false);
+  tx_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+
+  sc_time local = keeper_.get_local_time();
+  const sc_time before = sc_core::sc_time_stamp() + local;
+  port_->b_transport(tx_, local);
+  last_duration_ = sc_core::sc_time_stamp() + local - before;
+  keeper_.set(local);
+  if (keeper_.need_sync()) keeper_.sync();
+  if (tx_.get_response_status() != tlm::TLM_OK_RESPONSE) fail(command, offset, length);
+}
+
+void SpecularDriver::fail(tlm::tlm_command command, std::uint32_t offset, unsigned length) {
+  const tlm::tlm_response_status status = tx_.get_response_status();
+  shared_loaded_ = false;  // the target may hold other values than we think
+  // Ask the target why, as software would: read STATUS (through the same port).
+  ErrorCause cause = ErrorCause::none;
+  std::uint32_t status_word = 0;
+  tx_.set_command(tlm::TLM_READ_COMMAND);
+  tx_.set_address(base_ + offset_of(Reg::status));
+  tx_.set_data_ptr(reinterpret_cast<unsigned char*>(&status_word));
+  tx_.set_data_length(4);
+  tx_.set_streaming_width(4);
+  tx_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_time local = keeper_.get_local_time();
+  port_->b_transport(tx_, local);
+  keeper_.set(local);
+  if (tx_.get_response_status() == tlm::TLM_OK_RESPONSE)
+    cause = static_cast<ErrorCause>((status_word & status_bits::cause_mask) >> status_bits::cause_shift);
+
+  const RegisterInfo* row = decode(offset);
+  std::ostringstream s;
+  s << (command == tlm::TLM_READ_COMMAND ? "read of " : "write to ")
+    << (row != nullptr ? row->name : "unmapped") << " (offset 0x" << std::hex << offset
+    << std::dec << ", " << length << " bytes) refused: " << tx_.get_response_string()
+    << ", STATUS cause " << to_string(cause) << " (" << describe(cause) << ")";
+  throw TransportError(s.str(), status, cause);
+}
+
+std::uint32_t SpecularDriver::read(Reg reg) {
+  std::uint32_t value = 0;
+  transport(tlm::TLM_READ_COMMAND, offset_of(reg), reinterpret_cast<unsigned char*>(&value), 4);
+  return value;
+}
+
+void SpecularDriver::write(Reg reg, std::uint32_t value) {
+  transport(tlm::TLM_WRITE_COMMAND, offset_of(reg), reinterpret_cast<unsigned char*>(&value), 4);
+}
+
+void SpecularDriver::read_words(std::uint32_t offset, std::uint32_t* words, std::size_t count) {
+  transport(tlm::TLM_READ_COMMAND, offset, reinterpret_cast<unsigned char*>(words),
+            static_cast<unsigned>(4 * count));
+}
+
+void SpecularDriver::write_words(std::uint32_t offset, const std::uint32_t* words,
+                                 std::size_t count) {
+  // The target only reads a write's data; the generic payload's pointer is not const.
+  transport(tlm::TLM_WRITE_COMMAND, offset,
+            reinterpret_cast<unsigned char*>(const_cast<std::uint32_t*>(words)),
+            static_cast<unsigned>(4 * count));
+}
+
+void SpecularDriver::load_shared(code_t n, const std::array<code_t, 3>& rgb) {
+  if (!shared_loaded_ || n != loaded_n_) write(Reg::n, static_cast<std::uint32_t>(n));
+  loaded_n_ = n;
+  const Reg channel[3] = {Reg::r, Reg::g, Reg::b};
+  for (int ch = 0; ch < 3; ++ch) {
+    if (!shared_loaded_ || rgb[ch] != loaded_rgb_[ch])
+      write(channel[ch], static_cast<std::uint32_t>(rgb[ch]));
+    loaded_rgb_[ch] = rgb[ch];
+  }
+  shared_loaded_ = true;
+}
+
+std::array<std::int32_t, 3> SpecularDriver::compute(const Operands& in) {
+  load_shared(in.n, in.rgb);
+  write(Reg::cos, static_cast<std::uint32_t>(in.cos));
+  write(Reg::control, control_bits::start);
+  operation_duration_ = last_duration_;
+  return {static_cast<std::int32_t>(read(Reg::out_r)), static_cast<std::int32_t>(read(Reg::out_g)),
+          static_cast<std::int32_t>(read(Reg::out_b))};
+}
+
+namespace {
+code_t join(std::uint32_t low, std::uint32_t high) {
+  return static_cast<code_t>((static_cast<std::uint64_t>(high) << 32) | low);
+}
+}  // namespace
+
+Result SpecularDriver::compute_inspected(const Operands& in) {
+  Result r;
+  const auto out = compute(in);
+  for (int ch = 0; ch < 3; ++ch) r.out[ch] = out[ch];
+  r.reg1 = read(Reg::reg1);
+  r.reg9_pass1 = join(read(Reg::reg9_pass1_lo), read(Reg::reg9_pass1_hi));
+  r.reg9_pass2 = join(read(Reg::reg9_pass2_lo), read(Reg::reg9_pass2_hi));
+  r.rom38_k = read(Reg::rom38_k);
+  r.norm39 = static_cast<std::int32_t>(read(Reg::norm39));
+  return r;
+}
+
+void SpecularDriver::compute_batch(code_t n, const std::array<code_t, 3>& rgb,
+                                   const std::uint32_t* cos, std::size_t count, std::int32_t* out) {
+  load_shared(n, rgb);
+  operation_duration_ = sc_time();
+  for (std::size_t done = 0; done < count;) {
+    const std::size_t chunk = std::min<std::size_t>(count - done, batch_capacity);
+    write_words(offset_of(Reg::batch_cos), cos + done, chunk);
+    operation_duration_ += last_duration_;
+    read_words(offset_of(Reg::batch_out), reinterpret_cast<std::uint32_t*>(out + 3 * done),
+               3 * chunk);
+    done += chunk;
+  }
+}
+
+}  // namespace specular

@@ -1,0 +1,122 @@
+#include "specular/tlm/register_map.h"
+
+#include <sstream>
+
+namespace specular {
+
+const char* to_string(Access access) {
+  switch (access) {
+    case Access::read_only: return "RO";
+    case Access::read_write: return "RW";
+    case Access::write_1_to_clear: return "R/W1C";
+    case Access::self_clearing: return "W (reads 0)";
+  }
+  return "?";
+}
+
+const char* to_string(ErrorCause cause) {
+  switch (cause) {
+    case ErrorCause::none: return "none";
+    case ErrorCause::cos_out_of_range: return "cos_out_of_range";
+    case ErrorCause::n_out_of_range: return "n_out_of_range";
+    case ErrorCause::rgb_out_of_range: return "rgb_out_of_range";
+    case ErrorCause::read_only: return "read_only";
+    case ErrorCause::reserved_bits: return "reserved_bits";
+    case ErrorCause::busy: return "busy";
+    case ErrorCause::address: return "address";
+    case ErrorCause::burst: return "burst";
+    case ErrorCause::byte_enable: return "byte_enable";
+    case ErrorCause::command: return "command";
+  }
+  return "unknown";
+}
+
+const char* describe(ErrorCause cause) {
+  switch (cause) {
+    case ErrorCause::none: return "no error since the last clear";
+    case ErrorCause::cos_out_of_range: return "COS or a BATCH_COS word above 1.0 (65536 for U1.16)";
+    case ErrorCause::n_out_of_range: return "N outside 1..1000";
+    case ErrorCause::rgb_out_of_range: return "R, G or B above 255 (the RGB format's maximum)";
+    case ErrorCause::read_only: return "write to a read-only register or window";
+    case ErrorCause::reserved_bits: return "CONTROL written with a bit other than START set";
+    case ErrorCause::busy: return "START or an operand write while an operation is in flight";
+    case ErrorCause::address: return "unmapped or misaligned address, or a burst running past its window";
+    case ErrorCause::burst: return "length not a multiple of 4, a burst on a single register, or streaming";
+    case ErrorCause::byte_enable: return "byte enables that disable any byte";
+    case ErrorCause::command: return "a command other than read, write or ignore";
+  }
+  return "unknown cause";
+}
+
+std::uint32_t config_word(const Config& config) {
+  return config_word(config.normalisation, config.saturation, config.widths.cos_frac_bits,
+                     config.widths.out_frac_bits, config.widths.rgb_bits);
+}
+
+namespace {
+// Registers live below this offset and are decoded through a word table; windows
+// lie above it and are few.
+constexpr std::uint32_t register_block = 0x100;
+
+constexpr std::array<std::int8_t, register_block / 4> build_word_table() {
+  std::array<std::int8_t, register_block / 4> table{};
+  for (auto& entry : table) entry = -1;
+  for (std::size_t i = 0; i < register_count; ++i) {
+    const RegisterInfo& row = register_map[i];
+    if (row.end() > register_block) continue;
+    for (std::uint32_t w = 0; w < row.words; ++w)
+      table[row.offset / 4 + w] = static_cast<std::int8_t>(i);
+  }
+  return table;
+}
+constexpr auto word_table = build_word_table();
+}  // namespace
+
+const RegisterInfo* decode(std::uint64_t offset) {
+  if (offset % 4 != 0) return nullptr;
+  if (offset < register_block) {
+    const int index = word_table[offset / 4];
+    return index < 0 ? nullptr : &register_map[static_cast<std::size_t>(index)];
+  }
+  for (const RegisterInfo& row : register_map)
+    if (row.end() > register_block && offset >= row.offset && offset < row.end()) return &row;
+  return nullptr;
+}
+
+namespace {
+std::string hex(std::uint32_t value, int digits) {
+  std::ostringstream s;
+  s << "0x" << std::hex << std::uppercase;
+  s.width(digits);
+  s.fill('0');
+  s << value;
+  return s.str();
+}
+}  // namespace
+
+std::string register_map_markdown() {
+  std::ostringstream s;
+  s << "| offset | name | access | reset | description |\n";
+  s << "|---|---|---|---|---|\n";
+  for (const RegisterInfo& row : register_map) {
+    s << "| " << hex(row.offset, 3);
+    if (row.words > 1) s << "–" << hex(row.end() - 1, 3);
+    s << " | " << row.name << " | " << to_string(row.access) << " | " << hex(row.reset, 8)
+      << " | " << row.description << " |\n";
+  }
+  return s.str();
+}
+
+std::string error_cause_markdown() {
+  std::ostringstream s;
+  s << "| cause | name | meaning |\n";
+  s << "|---|---|---|\n";
+  for (std::uint8_t code = 0; code < error_cause_count; ++code) {
+    const auto cause = static_cast<ErrorCause>(code);
+    s << "| " << static_cast<int>(code) << " | " << to_string(cause) << " | " << describe(cause)
+      << " |\n";
+  }
+  return s.str();
+}
+
+}  // namespace specular

@@ -1,0 +1,298 @@
+#include "specular/tlm/target.h"
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace specular {
+
+using sc_core::sc_time;
+
+namespace {
+
+// The single-START path writes pins 24–26 straight into OUT_R, OUT_G, OUT_B.
+static_assert(index_of(Reg::out_g) == index_of(Reg::out_r) + 1 &&
+                  index_of(Reg::out_b) == index_of(Reg::out_r) + 2,
+              "OUT_R, OUT_G, OUT_B must be consecutive rows");
+
+void require_32_bits(const char* what, const FixedFormat& format) {
+  if (format.width() > 32)
+    throw std::invalid_argument(std::string("TLM target: ") + what + " format " + format.name() +
+                                " is " + std::to_string(format.width()) +
+                                " bits wide; its 32-bit register holds at most 32");
+}
+
+std::uint32_t load(const unsigned char* data) {
+  std::uint32_t value;
+  std::memcpy(&value, data, 4);
+  return value;
+}
+
+void store(unsigned char* data, std::uint32_t value) { std::memcpy(data, &value, 4); }
+
+bool all_bytes_enabled(const unsigned char* enables, unsigned enables_length, unsigned length) {
+  if (enables_length == 0) return false;
+  for (unsigned i = 0; i < length; ++i)
+    if (enables[i % enables_length] != TLM_BYTE_ENABLED) return false;
+  return true;
+}
+
+std::uint32_t low_word(code_t code) { return static_cast<std::uint32_t>(code); }
+std::uint32_t high_word(code_t code) {
+  return static_cast<std::uint32_t>(static_cast<std::uint64_t>(code) >> 32);
+}
+
+}  // namespace
+
+SpecularTarget::SpecularTarget(sc_core::sc_module_name name, const Config& config,
+                               const sc_time& clock_period)
+    : sc_module(name),
+      socket("socket"),
+      done_irq("done_irq"),
+      config_(config),
+      formats_(config.widths),
+      period_(clock_period),
+      batch_cos_(batch_capacity, 0),
+      batch_out_(3 * batch_capacity, 0) {
+  SPECULAR_HAS_PROCESS(SpecularTarget);
+  require_32_bits("COS", formats_.cos);
+  require_32_bits("N", formats_.n);
+  require_32_bits("RGB", formats_.rgb);
+  require_32_bits("OUT", formats_.out);
+  require_32_bits("ROM38_K", formats_.rom38);
+  require_32_bits("NORM39", formats_.norm);
+  if (clock_period <= sc_core::SC_ZERO_TIME)
+    throw std::invalid_argument("TLM target: clock period " + clock_period.to_string() +
+                                " must be positive");
+
+  for (const RegisterInfo& row : register_map)
+    if (row.words == 1) words_[index_of(row.reg)] = row.reset;
+  word(Reg::config) = config_word(config_);
+
+  socket.register_b_transport(this, &SpecularTarget::b_transport);
+  socket.register_transport_dbg(this, &SpecularTarget::transport_dbg);
+
+  done_irq.initialize(false);
+  SC_METHOD(drive_irq);
+  sensitive << irq_event_;
+  dont_initialize();
+}
+
+// ---- bus checks --------------------------------------------------------------------
+
+void SpecularTarget::b_transport(tlm::tlm_generic_payload& tx, sc_time& delay) {
+  const std::uint64_t address = tx.get_address();
+  const unsigned length = tx.get_data_length();
+
+  const RegisterInfo* row = decode(address);
+  if (row == nullptr)
+    return tx.set_response_status(
+        refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address, address));
+  if (length == 0 || length % 4 != 0 || (row->words == 1 && length != 4) ||
+      tx.get_streaming_width() < length)
+    return tx.set_response_status(
+        refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, address));
+  const std::uint32_t first = static_cast<std::uint32_t>(address - row->offset) / 4;
+  const std::uint32_t words = length / 4;
+  if (first + words > row->words)  // the burst's tail is not mapped to this window
+    return tx.set_response_status(refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address,
+                                         std::uint64_t{row->end()}));
+  if (const unsigned char* enables = tx.get_byte_enable_ptr();
+      enables != nullptr && !all_bytes_enabled(enables, tx.get_byte_enable_length(), length))
+    return tx.set_response_status(
+        refuse(tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, ErrorCause::byte_enable, address));
+
+  switch (tx.get_command()) {
+    case tlm::TLM_READ_COMMAND:
+      read(*row, first, words, tx.get_data_ptr());
+      return tx.set_response_status(tlm::TLM_OK_RESPONSE);
+    case tlm::TLM_WRITE_COMMAND:
+      if (row->access == Access::read_only)
+        return tx.set_response_status(
+            refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only, address));
+      return tx.set_response_status(write(*row, first, words, tx.get_data_ptr(), address, delay));
+    case tlm::TLM_IGNORE_COMMAND:
+      return tx.set_response_status(tlm::TLM_OK_RESPONSE);
+  }
+  tx.set_response_status(refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::command, address));
+}
+
+tlm::tlm_response_status SpecularTarget::refuse(tlm::tlm_response_status status, ErrorCause cause,
+                                                std::uint64_t address) {
+  error_ = true;
+  cause_ = cause;
+  word(Reg::error_address) = static_cast<std::uint32_t>(address);
+  return status;
+}
+
+// ---- reads -------------------------------------------------------------------------
+
+std::uint32_t SpecularTarget::status_word() const {
+  return (busy_ ? status_bits::busy : 0u) | (done_ ? status_bits::done : 0u) |
+         (error_ ? status_bits::error : 0u) |
+         (static_cast<std::uint32_t>(cause_) << status_bits::cause_shift);
+}
+
+std::uint32_t SpecularTarget::peek(const RegisterInfo& row, std::uint32_t index) const {
+  switch (row.reg) {
+    case Reg::status: return status_word();
+    case Reg::control: return 0;  // START is self-clearing
+    case Reg::batch_cos: return batch_cos_[index];
+    case Reg::batch_out: return batch_out_[index];
+    default: return word(row.reg);
+  }
+}
+
+void SpecularTarget::read(const RegisterInfo& row, std::uint32_t first, std::uint32_t words,
+                          unsigned char* data) const {
+  if (row.reg == Reg::batch_out)
+    std::memcpy(data, &batch_out_[first], 4 * words);
+  else if (row.reg == Reg::batch_cos)
+    std::memcpy(data, &batch_cos_[first], 4 * words);
+  else
+    store(data, peek(row, first));
+}
+
+// ---- writes ------------------------------------------------------------------------
+
+ErrorCause SpecularTarget::check_value(Reg reg, std::uint32_t value) const {
+  switch (reg) {
+    case Reg::cos:
+    case Reg::batch_cos:
+      return value > static_cast<std::uint64_t>(formats_.cos.one()) ? ErrorCause::cos_out_of_range
+                                                                    : ErrorCause::none;
+    case Reg::n:
+      return (value < n_min || value > n_max) ? ErrorCause::n_out_of_range : ErrorCause::none;
+    case Reg::r:
+    case Reg::g:
+    case Reg::b:
+      return value > static_cast<std::uint64_t>(formats_.rgb.max_code())
+                 ? ErrorCause::rgb_out_of_range
+                 : ErrorCause::none;
+    default: return ErrorCause::none;
+  }
+}
+
+tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uint32_t first,
+                                               std::uint32_t words, const unsigned char* data,
+                                               std::uint64_t address, sc_time& delay) {
+  switch (row.reg) {
+    case Reg::status: {  // write 1 to clear
+      const std::uint32_t value = load(data);
+      if (value & status_bits::error) {
+        error_ = false;
+        cause_ = ErrorCause::none;
+        word(Reg::error_address) = 0;
+      }
+      if ((value & status_bits::done) && done_) {
+        done_ = false;
+        irq_event_.notify(delay);
+      }
+      return tlm::TLM_OK_RESPONSE;
+    }
+    case Reg::control: {
+      const std::uint32_t value = load(data);
+      if (value & ~control_bits::defined)
+        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::reserved_bits, address);
+      if (value & control_bits::start) {
+        if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
+        run(&word(Reg::cos), 1, &word(Reg::out_r), delay);
+      }
+      return tlm::TLM_OK_RESPONSE;
+    }
+    case Reg::batch_cos: {
+      if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
+      // All or nothing: check every word before any is stored or computed.
+      for (std::uint32_t i = 0; i < words; ++i)
+        if (check_value(Reg::batch_cos, load(data + 4 * i)) != ErrorCause::none)
+          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::cos_out_of_range,
+                        address + 4 * i);
+      std::memcpy(&batch_cos_[first], data, 4 * words);
+      run(&batch_cos_[first], words, &batch_out_[3 * first], delay);
+      return tlm::TLM_OK_RESPONSE;
+    }
+    default: {  // operand registers: plain storage, range-checked, never clamped
+      const std::uint32_t value = load(data);
+      const ErrorCause cause = check_value(row.reg, value);
+      if (cause != ErrorCause::none)
+        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address);
+      word(row.reg) = value;
+      return tlm::TLM_OK_RESPONSE;
+    }
+  }
+}
+
+// ---- operations --------------------------------------------------------------------
+
+void SpecularTarget::run(const std::uint32_t* cos, std::size_t count, std::uint32_t* out,
+                         sc_time& delay) {
+  Operands shared;
+  shared.n = word(Reg::n);
+  shared.rgb = {word(Reg::r), word(Reg::g), word(Reg::b)};
+
+  busy_ = true;
+  done_ = false;
+  irq_event_.notify(delay);  // done_irq falls when the operation starts
+  execute(shared, cos, count, out, last_, delay);
+  busy_ = false;
+  done_ = true;
+  done_at_ = sc_core::sc_time_stamp() + delay;
+  irq_event_.notify(delay);  // ... and rises when it ends (drive_irq re-arms if needed)
+
+  for (int ch = 0; ch < 3; ++ch) words_[index_of(Reg::out_r) + ch] = out[3 * (count - 1) + ch];
+  word(Reg::reg1) = low_word(last_.reg1);
+  word(Reg::reg9_pass1_lo) = low_word(last_.reg9_pass1);
+  word(Reg::reg9_pass1_hi) = high_word(last_.reg9_pass1);
+  word(Reg::reg9_pass2_lo) = low_word(last_.reg9_pass2);
+  word(Reg::reg9_pass2_hi) = high_word(last_.reg9_pass2);
+  word(Reg::rom38_k) = low_word(last_.rom38_k);
+  word(Reg::norm39) = low_word(last_.norm39);
+}
+
+void SpecularTarget::drive_irq() {
+  // Notifications keep only the earliest pending time, so this method recomputes the
+  // level from the register state and re-arms itself for a rise still ahead.
+  const sc_time now = sc_core::sc_time_stamp();
+  if (done_ && now < done_at_) {
+    done_irq.write(false);
+    irq_event_.notify(done_at_ - now);
+    return;
+  }
+  done_irq.write(done_);
+}
+
+// ---- debug transport ---------------------------------------------------------------
+
+bool SpecularTarget::poke(const RegisterInfo& row, std::uint32_t index, std::uint32_t value) {
+  if (row.access != Access::read_write || check_value(row.reg, value) != ErrorCause::none)
+    return false;
+  if (row.reg == Reg::batch_cos)
+    batch_cos_[index] = value;
+  else
+    word(row.reg) = value;
+  return true;
+}
+
+unsigned int SpecularTarget::transport_dbg(tlm::tlm_generic_payload& tx) {
+  const std::uint64_t address = tx.get_address();
+  const unsigned length = tx.get_data_length();
+  unsigned char* data = tx.get_data_ptr();
+  const tlm::tlm_command command = tx.get_command();
+  if (address % 4 != 0 || length % 4 != 0) return 0;
+  unsigned int bytes = 0;
+  for (; bytes < length; bytes += 4) {
+    const RegisterInfo* row = decode(address + bytes);
+    if (row == nullptr) break;
+    const std::uint32_t index = static_cast<std::uint32_t>(address + bytes - row->offset) / 4;
+    if (command == tlm::TLM_READ_COMMAND) {
+      store(data + bytes, peek(*row, index));
+    } else if (command == tlm::TLM_WRITE_COMMAND) {
+      if (!poke(*row, index, load(data + bytes))) break;
+    } else {
+      break;
+    }
+  }
+  return bytes;
+}
+
+}  // namespace specular

@@ -1,6 +1,7 @@
 #include "sphere_study.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "csv.h"
 #include "lobes.h"
@@ -75,6 +76,8 @@ void run_sphere_study(const StudyOptions& options) {
       csv.cell(schlick(cos, n)).cell(us5739820(cos, n));
       csv.end_row();
     }
+    std::fprintf(stderr, "  sphere n = %u: %zu pixels -> %s\n", n, pixels.size(),
+                 csv.path().c_str());
   }
 }
 

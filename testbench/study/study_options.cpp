@@ -44,7 +44,9 @@ StudyOptions parse_study_options(int argc, const char* const* argv) {
       const std::string text = value();
       char* end = nullptr;
       const long workers = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end != '\0' || workers < 1 || workers > 64)
+      if (text.empty() || *end != '\0')
+        throw UsageError("--workers '" + text + "' is not a whole number; allowed: 1 … 64");
+      if (workers < 1 || workers > 64)
         throw UsageError("--workers " + text + " is outside the allowed range [1, 64]");
       options.workers = static_cast<unsigned>(workers);
     } else if (arg == "--help" || arg == "-h") {

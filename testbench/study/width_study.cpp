@@ -1,7 +1,9 @@
 #include "width_study.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 
 #include "csv.h"
@@ -61,9 +63,20 @@ std::vector<WidthCase> width_cases(bool quick) {
 
 std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
                                         const std::vector<unsigned>& ns, unsigned workers) {
+  // The grid repeats some cases of the one-at-a-time sweeps: measure each distinct
+  // device once (unique_of[i] = its index in `cores`).
   std::vector<std::unique_ptr<Core>> cores;
-  for (const WidthCase& c : cases)
-    cores.push_back(std::make_unique<Core>(Config{c.widths, Normalisation::patent, Saturation::clamp}));
+  std::vector<std::size_t> unique_of(cases.size());
+  std::map<std::array<int, 4>, std::size_t> seen;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Widths& w = cases[i].widths;
+    const std::array<int, 4> key = {w.rom5_addr_bits, w.rom5_word_bits, w.reg9_frac_bits,
+                                    w.rom38_frac_bits};
+    const auto [it, inserted] = seen.emplace(key, cores.size());
+    if (inserted)
+      cores.push_back(std::make_unique<Core>(Config{w, Normalisation::patent, Saturation::clamp}));
+    unique_of[i] = it->second;
+  }
   const Formats reference_formats;  // every case keeps the default cos format (U1.16)
   const code_t one = reference_formats.cos.one();
   const int bits = reference_formats.cos.frac_bits;
@@ -73,8 +86,8 @@ std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
                                   std::to_string(bits));
 
   std::vector<std::vector<Accumulator>> acc(std::max(1u, workers),
-                                            std::vector<Accumulator>(cases.size()));
-  parallel_for("width exploration (" + std::to_string(cases.size()) + " devices)", ns.size(),
+                                            std::vector<Accumulator>(cores.size()));
+  parallel_for("width exploration (" + std::to_string(cores.size()) + " devices)", ns.size(),
                workers, [&](std::size_t item, unsigned worker) {
     const unsigned n = ns[item];
     std::vector<double> formula(static_cast<std::size_t>(one) + 1), exact(formula.size());
@@ -85,7 +98,7 @@ std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
     }
     const double k = reference::k(n, Normalisation::patent);
     const double norm_scale = 1.0 / std::max(1.0, k);
-    for (std::size_t i = 0; i < cases.size(); ++i) {
+    for (std::size_t i = 0; i < cores.size(); ++i) {
       const Core& core = *cores[i];
       const Formats& f = core.formats();
       Accumulator& a = acc[worker][i];
@@ -108,10 +121,11 @@ std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
   for (std::size_t i = 0; i < cases.size(); ++i) {
     WidthResult r;
     r.config = cases[i];
-    r.rom5_bits = cores[i]->formats().rom5_bits();
-    r.rom38_bits = cores[i]->formats().rom38_bits();
+    const std::size_t u = unique_of[i];
+    r.rom5_bits = cores[u]->formats().rom5_bits();
+    r.rom38_bits = cores[u]->formats().rom38_bits();
     for (const auto& per_worker : acc) {
-      const Accumulator& a = per_worker[i];
+      const Accumulator& a = per_worker[u];
       if (a.vs_formula > r.max_err_vs_formula) {
         r.max_err_vs_formula = a.vs_formula;
         r.worst_n = a.worst_n;

@@ -80,7 +80,6 @@ std::vector<Stimulus> read_stimuli(std::istream& in, const std::string& source_n
   std::string line;
   std::size_t line_number = 0;
   bool header_allowed = true;
-  const std::string cos_range = "[0, 1]";
   const std::string n_range = "[" + std::to_string(n_min) + ", " + std::to_string(n_max) + "]";
   while (std::getline(in, line)) {
     ++line_number;
@@ -98,7 +97,7 @@ std::vector<Stimulus> read_stimuli(std::istream& in, const std::string& source_n
       throw UsageError(context + ": expected 5 fields 'cos,n,r,g,b', found " +
                        std::to_string(fields.size()) + " in '" + content + "'");
     try {
-      const double cos = parse_real(fields[0], "cos", cos_range);
+      const double cos = parse_cos(fields[0]);
       const long long n = parse_integer(fields[1], "n", n_range);
       std::array<long long, 3> rgb{};
       static const char* channels[3] = {"R", "G", "B"};

@@ -76,8 +76,7 @@ Options parse_options(const std::vector<std::string>& args) {
 
     try {
       if (option == "--cos") {
-        o.cos = parse_real(value, "cos", "[0, 1]");
-        quantise_cos(formats, o.cos);  // range check (NaN included)
+        o.cos = parse_cos(value);
       } else if (option == "--n") {
         o.n = parse_integer(value, "n", "[1, 1000]");
         check_n(o.n);
@@ -152,7 +151,8 @@ Options parse_options(const std::vector<std::string>& args) {
   if (seen.count("--seed") && o.stimulus != StimulusKind::random)
     throw UsageError("--seed applies to --random N only");
   if (!o.vcd_path.empty() && o.model != Model::pin)
-    throw UsageError("--vcd needs --model pin (the core model has no signals to trace)");
+    throw UsageError("--vcd needs --model pin (the " + std::string(to_string(o.model)) +
+                     " model has no signals to trace)");
   if (!o.vcd_path.empty() && !o.output_path.empty() && o.vcd_path == o.output_path)
     throw UsageError("--vcd and --output name the same file '" + o.vcd_path + "'");
   return o;
@@ -180,12 +180,15 @@ Stimulus values:
   with a 64-bit Mersenne Twister; a seed gives the same draws on every platform.
 
 Model and device:
-  --model pin|core          pin (default): the pin-level SystemC netlist, driven on
+  --model pin|core|tlm      pin (default): the pin-level SystemC netlist, driven on
                             pins 17-35 (reset 29, load registers, start on 27, read
                             24-26 at the rising edge of 35); cycles are measured.
                             core: the kernel-free bit-accurate core (same arithmetic,
                             no kernel, much faster); its cycles column is the spec's
                             2.5 periods, the model's annotated latency, not a measurement.
+                            tlm: the TLM-2.0 lt target (docs/tlm.md) through its registers
+                            from an initiator thread (1 us quantum); cycles = the START
+                            write's annotated delay in periods of --clock-period.
   --policy patent|energy|none   ROM 38 contents: 2pi/(n+2) (default), (n+2)/(2pi), 1
   --saturation clamp|literal    second-pass result: saturate at 0 (default) or keep sign
   --clock-period T          pin 28's period, e.g. 10ns (default), 2500ps, 1us; a multiple

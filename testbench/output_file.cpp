@@ -23,7 +23,21 @@ AtomicFile::AtomicFile(const std::string& path, const std::string& option,
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw UsageError(option + ": cannot write '" + path + "': it is a directory");
-  const fs::path target(path);
+  // Only regular files are replaced by the rename: renaming over a device (/dev/null),
+  // a FIFO or a symbolic link would replace that node itself (issue 5 finding: as
+  // root, --output /dev/full turned /dev/full into a plain file). A link is followed
+  // to the regular file it names.
+  fs::path target(path);
+  if (fs::is_symlink(fs::symlink_status(target, ec))) {
+    target = fs::canonical(target, ec);
+    if (ec)
+      throw UsageError(option + ": cannot write '" + path + "': the link leads nowhere (" +
+                       ec.message() + ")");
+    path_ = target.string();
+  }
+  if (fs::exists(target, ec) && !fs::is_regular_file(target, ec))
+    throw UsageError(option + ": cannot write '" + path +
+                     "': not a regular file (a device, FIFO or socket); give a file name");
   const fs::path directory = target.has_parent_path() ? target.parent_path() : fs::path(".");
   const std::string pattern =
       (directory / ("." + target.filename().string() + ".tmp-XXXXXX" + suffix)).string();

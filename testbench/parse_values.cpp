@@ -63,6 +63,13 @@ double parse_real(const std::string& text, const std::string& what, const std::s
   return value;
 }
 
+double parse_cos(const std::string& text) {
+  const double value = parse_real(text, "cos", "[0, 1]");
+  if (!(value >= 0.0 && value <= 1.0))  // NaN fails both comparisons
+    throw UsageError("cos = " + text + " is outside the allowed range [0, 1]");
+  return value;
+}
+
 std::uint64_t parse_clock_period_ps(const std::string& raw) {
   const std::string text = trim(raw);
   const std::string range = "[4 ps, 1 ms], a multiple of 4 ps (e.g. 10ns)";

@@ -20,6 +20,9 @@ std::uint64_t parse_unsigned64(const std::string& text, const std::string& what)
 /// A real number (strtod syntax), the whole text; NaN and infinities are returned
 /// as such so that the range check names them.
 double parse_real(const std::string& text, const std::string& what, const std::string& range);
+/// cos λ: a real number in [0, 1]; the message quotes the text as the user wrote it
+/// ("cos = -0.1 is outside …", not the double's 17 digits). NaN and ±inf are refused.
+double parse_cos(const std::string& text);
 
 /// Smallest and largest clock period, in picoseconds: a multiple of 4 ps because the
 /// pin harness changes inputs a quarter period before the clock edge; at most 1 ms so

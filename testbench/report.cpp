@@ -294,8 +294,9 @@ void write_summary_text(std::ostream& out, const Summary& s, const RunDescriptio
     worst_line(out, "max |out - out_ref|", s.out, nullptr);
     out << std::setprecision(6) << "  cycles, start to pin 35 rising: " << s.cycles_min;
     if (s.cycles_max != s.cycles_min) out << " .. " << s.cycles_max;
-    out << (run.model == "core" ? " (annotated from the spec: the core model has no clock)"
-                                : " (measured on the pins)")
+    out << (run.model == "core"  ? " (annotated from the spec: the core model has no clock)"
+            : run.model == "tlm" ? " (annotated by the TLM lt target on its START write)"
+                                 : " (measured on the pins)")
         << '\n';
   }
   out << "  tolerances: approx 2^-10; norm 2^-10*max(1,K); out 2^-10*max(1,K)*I + 1 LSB\n";

@@ -10,6 +10,7 @@
 #include "report.h"
 #include "run_models.h"
 #include "scoreboard.h"
+#include "specular/systemc.h"
 #include "usage_error.h"
 
 namespace specular {
@@ -56,7 +57,7 @@ std::string strip_vcd_suffix(const std::string& path) {
   return path;
 }
 
-int run(const Options& o, std::ostream& out, std::ostream& err) {
+int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap& tap) {
   // Everything that can be wrong with the user's request is found here, before the
   // model is built: the stimuli (a file is read in full) and both output paths.
   const Formats formats(o.config.widths);
@@ -88,14 +89,24 @@ int run(const Options& o, std::ostream& out, std::ostream& err) {
   std::vector<Stimulus> stimuli;  // the chunk in flight, aligned with its operands
   const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
     chunk.clear();
-    if (!plan.source->next(stimuli, max)) return false;
+    if (!plan.source->next(stimuli, max)) {
+      // The pin model stops the kernel at the last rising edge of 35, before SystemC
+      // writes that instant to the VCD: one more clock period (this runs in the pin
+      // driver's thread) puts the last result's 35↑ into the waveform.
+      if (settings.model == Model::pin && !settings.vcd_base.empty())
+        sc_core::wait(sc_core::sc_time(static_cast<double>(o.clock_period_ps), sc_core::SC_PS));
+      return false;
+    }
     for (const Stimulus& s : stimuli) chunk.push_back(s.operands);
     return true;
   };
   const ResultSink sink = [&](const std::vector<Operands>&, const std::vector<Result>& results,
                               const std::vector<double>& cycles) {
     for (std::size_t i = 0; i < results.size(); ++i) {
-      const Comparison c = scoreboard.compare(stimuli[i], results[i], cycles[i]);
+      Result result = results[i];
+      double measured = cycles[i];
+      if (tap) tap(stimuli[i], result, measured);
+      const Comparison c = scoreboard.compare(stimuli[i], result, measured);
       scoreboard.record(c);
       report->row(c);
     }
@@ -117,14 +128,15 @@ int run(const Options& o, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
-int run_testbench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run_testbench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+                  const ResultTap& tap) {
   try {
     const Options options = parse_options(args);
     if (options.help) {
       out << help_text();
       return exit_pass;
     }
-    return run(options, out, err);
+    return run(options, out, err, tap);
   } catch (const UsageError& e) {
     err << "specular_tb: error: " << e.what() << "\n(specular_tb --help lists the options)\n";
     return exit_usage;

@@ -2,10 +2,13 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -34,10 +37,13 @@ fs::path scratch(const std::string& name) {
   return dir;
 }
 
-Outcome run_tb(const std::string& arguments, const fs::path& dir) {
+/// Runs specular_tb with `arguments` (or, with `whole_command`, runs `arguments` as
+/// the shell command itself); standard output and error are captured through files
+/// in `dir`, removed again before returning.
+Outcome run_tb(const std::string& arguments, const fs::path& dir, bool whole_command = false) {
   const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = "'" + tb + "' " + arguments + " >'" + out.string() + "' 2>'" +
-                              err.string() + "' </dev/null";
+  const std::string command = (whole_command ? arguments : "'" + tb + "' " + arguments) + " >'" +
+                              out.string() + "' 2>'" + err.string() + "' </dev/null";
   const int raw = std::system(command.c_str());
   Outcome r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -152,4 +158,152 @@ TEST(CliExecutable, VcdNamesScopesAfterThePatent) {
     EXPECT_NE(text.find(expected), std::string::npos) << expected;
   EXPECT_EQ(text.find("signal_"), std::string::npos) << "every net has a patent name";
   EXPECT_EQ(files_in(dir), std::vector<std::string>{"specular.vcd"});
+}
+
+namespace {
+
+/// One bad request: the arguments, what the message must quote (the value as given
+/// and the allowed range or choices), and the input files the scratch dir holds.
+struct BadCase {
+  const char* name;
+  std::string arguments;
+  std::vector<std::string> fragments;
+  std::vector<std::pair<std::string, std::string>> files;  ///< name, content
+};
+
+std::vector<BadCase> bad_cases() {
+  return {
+      {"n_zero", "--cos 0.5 --n 0", {"n = 0", "[1, 1000]"}, {}},
+      {"n_above", "--cos 0.5 --n 1001", {"n = 1001", "[1, 1000]"}, {}},
+      {"n_negative", "--cos 0.5 --n -5", {"n = -5", "[1, 1000]"}, {}},
+      {"n_huge", "--cos 0.5 --n 99999999999999999999", {"99999999999999999999", "[1, 1000]"}, {}},
+      {"n_fraction", "--cos 0.5 --n 2.5", {"'2.5'", "not an integer", "[1, 1000]"}, {}},
+      {"n_word", "--cos 0.5 --n ten", {"'ten'", "not an integer", "[1, 1000]"}, {}},
+      {"cos_negative", "--cos -0.1 --n 3", {"cos = -0.1 ", "[0, 1]"}, {}},
+      {"cos_above_one", "--cos 1.0001 --n 3", {"cos = 1.0001 ", "[0, 1]"}, {}},
+      {"cos_nan", "--cos nan --n 3", {"cos = nan ", "[0, 1]"}, {}},
+      {"cos_inf", "--cos inf --n 3", {"cos = inf ", "[0, 1]"}, {}},
+      {"cos_overflow", "--cos 1e400 --n 3", {"cos = 1e400 ", "[0, 1]"}, {}},
+      {"cos_word", "--cos abc --n 3", {"'abc'", "not a number", "[0, 1]"}, {}},
+      {"cos_empty", "--cos '' --n 3", {"''", "not a number", "[0, 1]"}, {}},
+      {"rgb_above", "--cos 1 --n 3 --rgb 1,256,3", {"G = 256", "[0, 255]"}, {}},
+      {"rgb_negative", "--cos 1 --n 3 --rgb -1,2,3", {"R = -1", "[0, 255]"}, {}},
+      {"rgb_word", "--cos 1 --n 3 --rgb 1,2,blue", {"'blue'", "[0, 255]"}, {}},
+      {"rgb_count", "--cos 1 --n 3 --rgb 1,2", {"'1,2'", "expected 3", "[0, 255]"}, {}},
+      {"unknown_option", "--cos 1 --n 3 --frobnicate", {"unknown option", "--frobnicate"}, {}},
+      {"stray_word", "--cos 1 --n 3 extra", {"unknown option", "'extra'"}, {}},
+      {"bad_policy", "--cos 1 --n 3 --policy phong", {"'phong'", "patent, energy, none"}, {}},
+      {"bad_saturation", "--cos 1 --n 3 --saturation wrap", {"'wrap'", "clamp, literal"}, {}},
+      {"bad_model", "--cos 1 --n 3 --model rtl", {"'rtl'", "pin, core"}, {}},
+      {"bad_format", "--cos 1 --n 3 --format xml", {"'xml'", "text, csv, json"}, {}},
+      {"bad_clock", "--cos 1 --n 3 --clock-period 10ps", {"'10ps'", "multiple of 4 ps"}, {}},
+      {"random_zero", "--random 0", {"N = 0", "[1, 100000000]"}, {}},
+      {"missing_file", "--input absent.csv", {"absent.csv", "No such file"}, {}},
+      {"directory_as_input", "--input sub", {"'sub'", "directory"}, {{"sub/keep.csv", "1,1,1,1,1\n"}}},
+      {"empty_file", "--input in.csv", {"in.csv", "no operations"}, {{"in.csv", "# nothing\n\n"}}},
+      {"file_cos", "--input in.csv", {"in.csv:3", "cos = 1.5 ", "[0, 1]"},
+       {{"in.csv", "# header\n0.5,3,1,2,3\n1.5,3,1,2,3\n"}}},
+      {"file_cos_nan", "--input in.csv", {"in.csv:1", "cos = NaN ", "[0, 1]"}, {{"in.csv", "NaN,3,1,2,3\n"}}},
+      {"file_n", "--input in.csv", {"in.csv:2", "n = 1001", "[1, 1000]"},
+       {{"in.csv", "0.5,3,1,2,3\n0.5,1001,1,2,3\n"}}},
+      {"file_rgb", "--input in.csv", {"in.csv:1", "B = 300", "[0, 255]"}, {{"in.csv", "0.5,3,1,2,300\n"}}},
+      {"file_text", "--input in.csv", {"in.csv:1", "'x'", "[1, 1000]"}, {{"in.csv", "0.5,x,1,2,3\n"}}},
+      {"file_fields", "--input in.csv", {"in.csv:1", "expected 5 fields"}, {{"in.csv", "0.5,3,1,2\n"}}},
+  };
+}
+
+/// Test names and failure messages show the case's name, not its bytes.
+void PrintTo(const BadCase& c, std::ostream* os) { *os << c.name; }
+
+class CliBadInput : public ::testing::TestWithParam<BadCase> {};
+
+}  // namespace
+
+// Every kind of bad input through the executable, with --output and --vcd given: the
+// message quotes the value and the allowed range, the exit status is 2 (not a
+// signal), standard output stays empty, and no report, VCD or temporary file is left.
+TEST_P(CliBadInput, NamesValueAndRangeExitsTwoLeavesNoFile) {
+  const BadCase& c = GetParam();
+  const fs::path dir = scratch(std::string("bad_") + c.name);
+  std::vector<std::string> before;
+  for (const auto& [name, content] : c.files) {
+    fs::create_directories((dir / name).parent_path());
+    std::ofstream(dir / name) << content;
+  }
+  before = files_in(dir);
+  std::sort(before.begin(), before.end());
+  const Outcome r = run_tb("cd '" + dir.string() + "' && '" + tb + "' " + c.arguments +
+                               " --output report.out --vcd wave.vcd",
+                           dir, /*whole_command=*/true);
+  EXPECT_EQ(r.status, 2) << r.err;
+  for (const std::string& f : c.fragments)
+    EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' missing in: " << r.err;
+  EXPECT_NE(r.err.find("specular_tb: error: "), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  std::vector<std::string> after = files_in(dir);
+  std::sort(after.begin(), after.end());
+  EXPECT_EQ(after, before) << "no report, VCD or temporary file left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliBadInput, ::testing::ValuesIn(bad_cases()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// The options of one computation, end to end through the executable: another clock
+// period (the latency stays 2.5 periods), another policy pair, each output format
+// written to --output. Figures checked against the formula written out here.
+TEST(CliExecutable, PolicyClockAndEveryFormatToAFile) {
+  const fs::path dir = scratch("formats");
+  // cos 0.25, n 1: x = log2 0.25 = −2, A = 1 − ½·log2 3 (positive: literal = clamp
+  // here); energy K(1) = 3/(2π).
+  const double a = 1 - 0.5 * std::log2(3.0);
+  const double k = 3 / (2 * M_PI);
+  for (const std::string format : {"text", "csv", "json"}) {
+    SCOPED_TRACE(format);
+    const fs::path target = dir / ("out." + format);
+    const Outcome r = run_tb("--cos 0.25 --n 1 --rgb 255,0,16 --policy energy --saturation literal "
+                             "--clock-period 2.5ns --format " + format + " --output '" +
+                                 target.string() + "'",
+                             dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_TRUE(r.out.empty()) << "the report goes to --output only";
+    const std::string report = slurp(target);
+    if (format == "csv") {
+      std::istringstream in(report);
+      std::string header, row;
+      std::getline(in, header);
+      std::getline(in, row);
+      std::vector<std::string> names, values;
+      std::stringstream hs(header), rs(row);
+      for (std::string f; std::getline(hs, f, ',');) names.push_back(f);
+      for (std::string f; std::getline(rs, f, ',');) values.push_back(f);
+      ASSERT_EQ(names.size(), values.size());
+      std::map<std::string, std::string> field;
+      for (std::size_t i = 0; i < names.size(); ++i) field[names[i]] = values[i];
+      EXPECT_EQ(field["cos_q"], "0.25");
+      EXPECT_NEAR(std::stod(field["approx_ref"]), a, 1e-15);
+      EXPECT_NEAR(std::stod(field["approx"]), a, std::ldexp(1.0, -10));
+      EXPECT_NEAR(std::stod(field["norm_ref"]), k * a, 1e-15);
+      EXPECT_NEAR(std::stod(field["norm_exact"]), k * 0.25, 1e-15);
+      EXPECT_NEAR(std::stod(field["out_r"]), k * a * 255, std::ldexp(1.0, -10) * 255 + std::ldexp(1.0, -13));
+      EXPECT_EQ(field["out_g"], "0");
+      EXPECT_EQ(field["cycles"], "2.5");
+      EXPECT_EQ(field["reg1_hex"], "0x04000");  // 0.25 in U1.16, 17 bits
+      EXPECT_EQ(field["pass"], "1");
+    } else if (format == "json") {
+      EXPECT_NE(report.find("\"normalisation\": \"energy\", \"saturation\": \"literal\", "
+                            "\"clock_period_ps\": 2500"),
+                std::string::npos)
+          << report;
+      EXPECT_NE(report.find("\"cycles\": 2.5"), std::string::npos);
+      EXPECT_NE(report.find("\"reg1_hex\": \"0x04000\""), std::string::npos);
+    } else {
+      EXPECT_NE(report.find("normalisation energy, saturation literal, clock 2500 ps"), std::string::npos)
+          << report;
+      EXPECT_NE(report.find("PASS"), std::string::npos);
+    }
+  }
+  std::vector<std::string> files = files_in(dir);
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"out.csv", "out.json", "out.text"}));
 }

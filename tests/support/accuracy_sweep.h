@@ -54,6 +54,8 @@ struct SweepFigures {
   Worst norm_scaled;       ///< |norm − norm_ref| / max(1, K)
   Worst norm;              ///< |norm − norm_ref|
   Worst norm_exact;        ///< |norm − K·cos_q^n|
+  Worst out;               ///< |out − out_ref| over the three channels, in units of R, G, B
+  Worst out_share;         ///< |out − out_ref| / its bound (1 = at the bound)
   Worst pass1;             ///< |reg9 pass 1 − (1 − n·log2 cos_q)|
   std::string first_miss;  ///< the first miss, described
 };
@@ -118,7 +120,10 @@ inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes
         const double intensity = static_cast<double>(rgb[ch]);
         const double out = f.out.to_real(r.out[ch]);
         const double out_ref = norm_ref * intensity;
-        if (!(std::fabs(out - out_ref) <= reference::out_tolerance(kn, intensity, f.out.lsb())))
+        const double out_bound = reference::out_tolerance(kn, intensity, f.out.lsb());
+        s.out.update(std::fabs(out - out_ref), n, c);
+        s.out_share.update(std::fabs(out - out_ref) / out_bound, n, c);
+        if (!(std::fabs(out - out_ref) <= out_bound))
           miss(s.out_misses, "out", n, c, out, out_ref);
       }
       ++s.evaluations;
@@ -154,7 +159,9 @@ inline std::string summary(const Config& config, const SweepFigures& s) {
        << "; max|norm-ref|/max(1,K)=" << with_power_of_two(s.norm_scaled.error) << " at "
        << where(f, s.norm_scaled) << "; max|norm-ref|=" << with_power_of_two(s.norm.error)
        << " at " << where(f, s.norm) << "; max|norm-exact|=" << with_power_of_two(s.norm_exact.error)
-       << " at " << where(f, s.norm_exact) << "; max|pass1-ref|=" << with_power_of_two(s.pass1.error)
+       << " at " << where(f, s.norm_exact) << "; max|out-out_ref|=" << with_power_of_two(s.out.error)
+       << " at " << where(f, s.out) << "; max|out-out_ref|/bound=" << s.out_share.error
+       << " at " << where(f, s.out_share) << "; max|pass1-ref|=" << with_power_of_two(s.pass1.error)
        << " at " << where(f, s.pass1);
   return line.str();
 }

@@ -4,7 +4,11 @@
 #include <iostream>
 #include <memory>
 
+#include <tlm_utils/simple_initiator_socket.h>
+
 #include "specular/pin_harness.h"
+#include "specular/tlm/driver.h"
+#include "specular/tlm/lt_target.h"
 #include "usage_error.h"
 
 namespace specular {
@@ -14,15 +18,17 @@ const char* to_string(Model model) {
   switch (model) {
     case Model::pin: return "pin";
     case Model::core: return "core";
+    case Model::tlm: return "tlm";
   }
   return "?";
 }
 
-std::string model_names() { return "pin, core"; }
+std::string model_names() { return "pin, core, tlm"; }
 
 Model parse_model(const std::string& text) {
   if (text == "pin") return Model::pin;
   if (text == "core") return Model::core;
+  if (text == "tlm") return Model::tlm;
   throw UsageError("--model = '" + text + "' is not one of: " + model_names());
 }
 
@@ -111,6 +117,73 @@ void run_core_model(const RunSettings& settings, const OperandSource& source,
   }
 }
 
+/// The TLM model: an initiator thread plays the CPU's driver and runs every operation
+/// through the `lt` target's registers (N, R, G, B when they change, COS, START, then
+/// the outputs and inspection registers), under a 1 µs quantum keeper as a virtual
+/// platform would. Cycles are the START write's annotated delay in clock periods.
+class TlmInitiator : public sc_core::sc_module {
+ public:
+  TlmInitiator(sc_core::sc_module_name name, const RunSettings& settings,
+               const OperandSource& source, const ResultSink& sink)
+      : sc_module(name),
+        period_(static_cast<double>(settings.clock_period_ps), sc_core::SC_PS),
+        target_("lt_target", settings.config, period_),
+        driver_(socket_, 0, keeper_),
+        source_(source),
+        sink_(sink),
+        chunk_size_(settings.chunk_size) {
+    SPECULAR_HAS_PROCESS(TlmInitiator);
+    socket_.bind(target_.socket);
+    target_.done_irq(irq_);
+    SC_THREAD(drive);
+  }
+
+  std::exception_ptr failure;
+
+ private:
+  void drive() {
+    try {
+      tlm::tlm_global_quantum::instance().set(sc_core::sc_time(1, sc_core::SC_US));
+      keeper_.reset();
+      std::vector<Operands> chunk;
+      std::vector<Result> results;
+      std::vector<double> cycles;
+      chunk.reserve(chunk_size_);
+      while (source_(chunk, chunk_size_)) {
+        results.resize(chunk.size());
+        cycles.resize(chunk.size());
+        for (std::size_t i = 0; i < chunk.size(); ++i) {
+          results[i] = driver_.compute_inspected(chunk[i]);
+          cycles[i] = driver_.operation_duration() / period_;
+        }
+        sink_(chunk, results, cycles);
+      }
+      keeper_.sync();
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    sc_core::sc_stop();
+  }
+
+  sc_core::sc_time period_;
+  tlm_utils::simple_initiator_socket<TlmInitiator, 32> socket_{"socket"};
+  SpecularLtTarget target_;
+  sc_core::sc_signal<bool> irq_{"done_irq"};
+  tlm_utils::tlm_quantumkeeper keeper_;
+  SpecularDriver driver_;
+  const OperandSource& source_;
+  const ResultSink& sink_;
+  std::size_t chunk_size_;
+};
+
+void run_tlm_model(const RunSettings& settings, const OperandSource& source,
+                   const ResultSink& sink) {
+  sc_core::sc_report_handler::set_handler(kernel_reports_to_stderr);
+  TlmInitiator initiator("tb", settings, source, sink);
+  sc_core::sc_start();
+  if (initiator.failure) std::rethrow_exception(initiator.failure);
+}
+
 }  // namespace
 
 void run_operations(const RunSettings& settings, const OperandSource& source,
@@ -118,6 +191,7 @@ void run_operations(const RunSettings& settings, const OperandSource& source,
   switch (settings.model) {
     case Model::pin: return run_pin_model(settings, source, sink);
     case Model::core: return run_core_model(settings, source, sink);
+    case Model::tlm: return run_tlm_model(settings, source, sink);
   }
 }
 

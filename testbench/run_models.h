@@ -18,12 +18,13 @@ namespace tb {
 enum class Model {
   pin,   ///< the pin-level SystemC netlist, driven through PinHarness (default)
   core,  ///< the kernel-free bit-accurate core; latency annotated from the spec
+  tlm,   ///< the TLM-2.0 `lt` target through its registers; cycles = its annotation
 };
 
 const char* to_string(Model model);
-/// "pin" or "core"; throws UsageError naming the value and the choices.
+/// "pin", "core" or "tlm"; throws UsageError naming the value and the choices.
 Model parse_model(const std::string& text);
-/// "pin, core": the choices, for messages and --help.
+/// "pin, core, tlm": the choices, for messages and --help.
 std::string model_names();
 
 /// The spec's timing table: start → rising edge of 35 in clock periods. The core
@@ -34,7 +35,7 @@ constexpr double spec_latency_cycles = 2.5;
 struct RunSettings {
   Model model = Model::pin;
   Config config{};
-  std::uint64_t clock_period_ps = 10000;  ///< pin model: period of pin 28
+  std::uint64_t clock_period_ps = 10000;  ///< pin model: period of pin 28; tlm: of its annotation
   std::string vcd_base;          ///< pin model: VCD file name without ".vcd"; empty = no trace
   std::size_t chunk_size = 4096;  ///< operations per batch (memory stays flat)
 };

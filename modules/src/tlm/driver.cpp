@@ -13,7 +13,7 @@ SpecularDriver::SpecularDriver(port_type& port, std::uint64_t base,
     : port_(port), base_(base), keeper_(keeper) {}
 
 void SpecularDriver::transport(tlm::tlm_command command, std::uint32_t offset,
-                               unsigned char* data, unsigned length) {
+                               unsigned char* data, unsigned length, bool timed) {
   tx_.set_command(command);
   tx_.set_address(base_ + offset);
   tx_.set_data_ptr(data);
@@ -25,9 +25,13 @@ void SpecularDriver::transport(tlm::tlm_command command, std::uint32_t offset,
   tx_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
 
   sc_time local = keeper_.get_local_time();
-  const sc_time before = sc_core::sc_time_stamp() + local;
-  port_->b_transport(tx_, local);
-  last_duration_ = sc_core::sc_time_stamp() + local - before;
+  if (timed) {  // only operations are timed: sc_time_stamp() is a call into the kernel
+    const sc_time before = sc_core::sc_time_stamp() + local;
+    port_->b_transport(tx_, local);
+    last_duration_ = sc_core::sc_time_stamp() + local - before;
+  } else {
+    port_->b_transport(tx_, local);
+  }
   keeper_.set(local);
   if (keeper_.need_sync()) keeper_.sync();
   if (tx_.get_response_status() != tlm::TLM_OK_RESPONSE) fail(command, offset, length);
@@ -80,7 +84,7 @@ void SpecularDriver::write_words(std::uint32_t offset, const std::uint32_t* word
   // The target only reads a write's data; the generic payload's pointer is not const.
   transport(tlm::TLM_WRITE_COMMAND, offset,
             reinterpret_cast<unsigned char*>(const_cast<std::uint32_t*>(words)),
-            static_cast<unsigned>(4 * count));
+            static_cast<unsigned>(4 * count), true);
 }
 
 void SpecularDriver::load_shared(code_t n, const std::array<code_t, 3>& rgb) {
@@ -98,10 +102,28 @@ void SpecularDriver::load_shared(code_t n, const std::array<code_t, 3>& rgb) {
 std::array<std::int32_t, 3> SpecularDriver::compute(const Operands& in) {
   load_shared(in.n, in.rgb);
   write(Reg::cos, static_cast<std::uint32_t>(in.cos));
-  write(Reg::control, control_bits::start);
+  std::uint32_t start = control_bits::start;
+  transport(tlm::TLM_WRITE_COMMAND, offset_of(Reg::control),
+            reinterpret_cast<unsigned char*>(&start), 4, true);
   operation_duration_ = last_duration_;
   return {static_cast<std::int32_t>(read(Reg::out_r)), static_cast<std::int32_t>(read(Reg::out_g)),
           static_cast<std::int32_t>(read(Reg::out_b))};
+}
+
+std::array<std::int32_t, 3> SpecularDriver::compute_burst(const Operands& in) {
+  // OPERANDS words 0–5: COS, N, R, G, B, CONTROL; RESULTS: OUT_R, OUT_G, OUT_B.
+  std::uint32_t operands[operand_words] = {
+      static_cast<std::uint32_t>(in.cos),    static_cast<std::uint32_t>(in.n),
+      static_cast<std::uint32_t>(in.rgb[0]), static_cast<std::uint32_t>(in.rgb[1]),
+      static_cast<std::uint32_t>(in.rgb[2]), control_bits::start};
+  write_words(offset_of(Reg::operands), operands, operand_words);
+  loaded_n_ = in.n;  // what the target now holds (a refusal throws before this)
+  loaded_rgb_ = in.rgb;
+  shared_loaded_ = true;
+  operation_duration_ = last_duration_;
+  std::array<std::int32_t, 3> out;
+  read_words(offset_of(Reg::results), reinterpret_cast<std::uint32_t*>(out.data()), 3);
+  return out;
 }
 
 namespace {

@@ -137,6 +137,8 @@ std::uint32_t SpecularTarget::peek(const RegisterInfo& row, std::uint32_t index)
   switch (row.reg) {
     case Reg::status: return status_word();
     case Reg::control: return 0;  // START is self-clearing
+    case Reg::operands: return peek(info(operand_register(index)), 0);
+    case Reg::results: return words_[index_of(Reg::out_r) + index];
     case Reg::batch_cos: return batch_cos_[index];
     case Reg::batch_out: return batch_out_[index];
     default: return word(row.reg);
@@ -150,7 +152,7 @@ void SpecularTarget::read(const RegisterInfo& row, std::uint32_t first, std::uin
   else if (row.reg == Reg::batch_cos)
     std::memcpy(data, &batch_cos_[first], 4 * words);
   else
-    store(data, peek(row, first));
+    for (std::uint32_t i = 0; i < words; ++i) store(data + 4 * i, peek(row, first + i));
 }
 
 // ---- writes ------------------------------------------------------------------------
@@ -200,6 +202,32 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
       }
       return tlm::TLM_OK_RESPONSE;
     }
+    case Reg::operands: {
+      // Spec §3 protocol: registers 2, 10–12 hold still until 35 rises.
+      if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
+      // All or nothing, as one register write each would check them: nothing is
+      // stored (and nothing starts) unless every word is acceptable.
+      for (std::uint32_t i = 0; i < words; ++i) {
+        const Reg reg = operand_register(first + i);
+        const std::uint32_t value = load(data + 4 * i);
+        const ErrorCause cause = reg == Reg::control
+                                     ? ((value & ~control_bits::defined) ? ErrorCause::reserved_bits
+                                                                         : ErrorCause::none)
+                                     : check_value(reg, value);
+        if (cause != ErrorCause::none)
+          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i);
+      }
+      bool start = false;
+      for (std::uint32_t i = 0; i < words; ++i) {
+        const Reg reg = operand_register(first + i);
+        if (reg == Reg::control)
+          start = (load(data + 4 * i) & control_bits::start) != 0;
+        else
+          word(reg) = load(data + 4 * i);
+      }
+      if (start) run(&word(Reg::cos), 1, &word(Reg::out_r), delay);
+      return tlm::TLM_OK_RESPONSE;
+    }
     case Reg::batch_cos: {
       if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
       // All or nothing: check every word before any is stored or computed.
@@ -212,6 +240,8 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
       return tlm::TLM_OK_RESPONSE;
     }
     default: {  // operand registers: plain storage, range-checked, never clamped
+      // Spec §3 protocol: registers 2, 10–12 hold still until 35 rises.
+      if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
       const std::uint32_t value = load(data);
       const ErrorCause cause = check_value(row.reg, value);
       if (cause != ErrorCause::none)
@@ -264,6 +294,8 @@ void SpecularTarget::drive_irq() {
 // ---- debug transport ---------------------------------------------------------------
 
 bool SpecularTarget::poke(const RegisterInfo& row, std::uint32_t index, std::uint32_t value) {
+  if (row.reg == Reg::operands)  // the storage behind it; CONTROL is not storage
+    return poke(info(operand_register(index)), 0, value);
   if (row.access != Access::read_write || check_value(row.reg, value) != ErrorCause::none)
     return false;
   if (row.reg == Reg::batch_cos)

@@ -49,6 +49,10 @@ class SpecularDriver {
   /// One operation through the registers: N, R, G, B (those that changed since the
   /// driver last wrote them), COS, START, then OUT_R, OUT_G, OUT_B.
   std::array<std::int32_t, 3> compute(const Operands& in);
+  /// The same operation in two bursts: one write of COS, N, R, G, B and START to the
+  /// OPERANDS block, one read of OUT_R, OUT_G, OUT_B from RESULTS. The fast path for
+  /// one operation whose n or R, G, B may change every time.
+  std::array<std::int32_t, 3> compute_burst(const Operands& in);
   /// As compute(), and reads the inspection registers too: every field of Result.
   Result compute_inspected(const Operands& in);
   /// `count` operations sharing n and R, G, B, through BATCH_COS and BATCH_OUT
@@ -62,8 +66,9 @@ class SpecularDriver {
   tlm_utils::tlm_quantumkeeper& keeper() { return keeper_; }
 
  private:
+  /// `timed`: measure the transaction's duration into last_duration_ (operations only).
   void transport(tlm::tlm_command command, std::uint32_t offset, unsigned char* data,
-                 unsigned length);
+                 unsigned length, bool timed = false);
   void load_shared(code_t n, const std::array<code_t, 3>& rgb);
   [[noreturn]] void fail(tlm::tlm_command command, std::uint32_t offset, unsigned length);
 

@@ -50,6 +50,8 @@ enum class Reg : std::uint8_t {
   reg9_pass2_hi,
   rom38_k,
   norm39,
+  operands,   ///< window: COS, N, R, G, B, CONTROL as one burst (aliases)
+  results,    ///< window: OUT_R, OUT_G, OUT_B as one burst (aliases)
   batch_cos,  ///< window: one cos code per operation
   batch_out,  ///< window: three output codes (R, G, B) per operation
   count
@@ -139,7 +141,7 @@ constexpr std::uint8_t error_cause_count = 11;
 inline constexpr std::array<RegisterInfo, register_count> register_map{{
     // clang-format off
     {Reg::id,             "ID",             0x000, 1, Access::read_only,        device_id,   "Identification: 0x00059965 (patent UA 59965 U)"},
-    {Reg::version,        "VERSION",        0x004, 1, Access::read_only,        map_version, "Register map version, major << 16 | minor"},
+    {Reg::version,        "VERSION",        0x004, 1, Access::read_only,        map_version, "Register map version: (major << 16) + minor"},
     {Reg::config,         "CONFIG",         0x008, 1, Access::read_only,        config_word(Normalisation::patent, Saturation::clamp, 16, 13, 8),
                                                                                              "[1:0] normalisation (0 patent, 1 energy, 2 none), [4] saturation (0 clamp, 1 literal), [15:8] COS fraction bits, [23:16] OUT fraction bits, [31:24] RGB bits; fixed at construction (reset shown for the defaults)"},
     {Reg::status,         "STATUS",         0x00C, 1, Access::write_1_to_clear, 0,           "[0] busy, [1] done (W1C, drives done_irq), [2] error (W1C, clears cause and ERROR_ADDRESS), [15:8] error cause"},
@@ -161,6 +163,8 @@ inline constexpr std::array<RegisterInfo, register_count> register_map{{
     {Reg::reg9_pass2_hi,  "REG9_PASS2_HI",  0x060, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
     {Reg::rom38_k,        "ROM38_K",        0x064, 1, Access::read_only,        0,           "Inspection: ROM 38 word K(n), U8.16"},
     {Reg::norm39,         "NORM39",         0x068, 1, Access::read_only,        0,           "Inspection: multiplier 39 output K·A, S10.20"},
+    {Reg::operands,       "OPERANDS",       0x080, 6, Access::read_write,       0,           "Operand block: words 0–5 are COS, N, R, G, B, CONTROL (the registers above); a burst writes any contiguous part, all words checked before any is stored; START in word 5 then runs the operation"},
+    {Reg::results,        "RESULTS",        0x0A0, 3, Access::read_only,        0,           "Result block: OUT_R, OUT_G, OUT_B (the registers above) in one burst read"},
     {Reg::batch_cos,      "BATCH_COS",      0x1000, batch_capacity, Access::read_write, 0,   "Batch window: a burst write of k cos codes at word i runs k operations (N, R, G, B shared), results to BATCH_OUT word 3i"},
     {Reg::batch_out,      "BATCH_OUT",      0x4000, 3 * batch_capacity, Access::read_only, 0, "Batch results: OUT_R, OUT_G, OUT_B of operation i at words 3i, 3i+1, 3i+2"},
     // clang-format on
@@ -186,6 +190,16 @@ constexpr bool map_is_consistent() {
 }  // namespace detail
 static_assert(detail::map_is_consistent(),
               "register_map rows must follow Reg's order, be word-aligned and not overlap");
+
+/// The single register behind word `index` (0..5) of the OPERANDS block.
+constexpr Reg operand_register(std::uint32_t index) {
+  constexpr Reg block[] = {Reg::cos, Reg::n, Reg::r, Reg::g, Reg::b, Reg::control};
+  return block[index];
+}
+constexpr std::uint32_t operand_words = 6;
+static_assert(info(Reg::operands).words == operand_words &&
+                  info(Reg::results).words == 3,
+              "OPERANDS holds COS, N, R, G, B, CONTROL; RESULTS holds OUT_R, OUT_G, OUT_B");
 
 /// The row whose range holds `offset`, or nullptr (unmapped or not word-aligned).
 const RegisterInfo* decode(std::uint64_t offset);

@@ -1,0 +1,180 @@
+// specular_tb --model tlm: every stimulus mode runs through the TLM `lt` target and
+// reports the same fields, bit for bit, as the kernel-free core; cycles are the
+// target's annotated latency (2.5 periods). Runs the executable as a user does, and
+// the model dispatch in process (one elaboration).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "run_models.h"
+#include "specular/core.h"
+#include "specular/reference.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / ("specular_tlm_tb_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+Outcome run_tb(const std::string& arguments, const fs::path& dir, const std::string& tag) {
+  const fs::path out = dir / (tag + ".out"), err = dir / (tag + ".err");
+  const std::string command = "'" + tb + "' " + arguments + " >'" + out.string() + "' 2>'" +
+                              err.string() + "' </dev/null";
+  const int raw = std::system(command.c_str());
+  Outcome r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = slurp(out);
+  r.err = slurp(err);
+  return r;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+/// The value of CSV column `name` in every data row.
+std::vector<std::string> column(const std::string& csv, const std::string& name) {
+  const std::vector<std::string> rows = lines(csv);
+  std::vector<std::string> header;
+  std::istringstream h(rows.at(0));
+  for (std::string field; std::getline(h, field, ',');) header.push_back(field);
+  std::size_t index = header.size();
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) index = i;
+  EXPECT_LT(index, header.size()) << name;
+  std::vector<std::string> values;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    std::istringstream row(rows[r]);
+    std::string field;
+    for (std::size_t i = 0; i <= index && std::getline(row, field, ','); ++i) {
+    }
+    values.push_back(field);
+  }
+  return values;
+}
+
+TEST(TlmTb, RandomRunEqualsTheCoreBitForBit) {
+  const fs::path dir = scratch("random");
+  const Outcome tlm = run_tb("--model tlm --random 2000 --seed 11 --format csv", dir, "tlm");
+  const Outcome core = run_tb("--model core --random 2000 --seed 11 --format csv", dir, "core");
+  ASSERT_EQ(tlm.status, 0) << tlm.err;
+  ASSERT_EQ(core.status, 0) << core.err;
+  EXPECT_EQ(lines(tlm.out).size(), 2001u) << "a header and 2000 rows";
+  EXPECT_EQ(tlm.out, core.out) << "every field, hex codes included";
+  for (const std::string& cycles : column(tlm.out, "cycles")) ASSERT_EQ(std::stod(cycles), 2.5);
+  EXPECT_NE(tlm.err.find("annotated by the TLM lt target"), std::string::npos) << tlm.err;
+}
+
+TEST(TlmTb, InputFileAndOnePointEqualTheCore) {
+  const fs::path dir = scratch("input");
+  const fs::path input = dir / "points.csv";
+  std::ofstream(input) << "# cos,n,r,g,b\n0,1,255,255,255\n1,1000,1,2,3\n0.999985,999,9,8,7\n"
+                          "0.5,2,0,128,255\n0.7,10,10,10,10\n";
+  for (const std::string& mode :
+       {"--input '" + input.string() + "' --format csv", std::string("--cos 0.9 --n 10 --rgb 200,100,50 --format json"),
+        "--input '" + input.string() + "' --format json --policy energy --saturation literal"}) {
+    SCOPED_TRACE(mode);
+    const Outcome tlm = run_tb("--model tlm --clock-period 8ns " + mode, dir, "tlm");
+    const Outcome core = run_tb("--model core --clock-period 8ns " + mode, dir, "core");
+    ASSERT_EQ(tlm.status, 0) << tlm.err;
+    ASSERT_EQ(core.status, 0) << core.err;
+    std::string expected = core.out;  // JSON names the model; nothing else may differ
+    for (std::size_t at; (at = expected.find("\"core\"")) != std::string::npos;)
+      expected.replace(at, 6, "\"tlm\"");
+    EXPECT_EQ(tlm.out, expected);
+  }
+}
+
+TEST(TlmTb, SweepPassesThroughTheTarget) {
+  const fs::path dir = scratch("sweep");
+  const Outcome r = run_tb("--model tlm --sweep", dir, "sweep");
+  EXPECT_EQ(r.status, 0) << r.err;
+  // 1021 cos values (513 multiples of 2^-9, 512 codes below 1, 1.0 counted once) × 1000 n.
+  EXPECT_NE(r.out.find("summary: 1021000 computation(s), 0 out of tolerance: PASS"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("start to pin 35 rising: 2.5 (annotated by the TLM lt target"),
+            std::string::npos)
+      << r.out;
+}
+
+TEST(TlmTb, VcdNeedsThePinModel) {
+  const fs::path dir = scratch("vcd");
+  const Outcome r = run_tb("--model tlm --cos 1 --n 1 --vcd '" + (dir / "w.vcd").string() + "'",
+                           dir, "vcd");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--vcd needs --model pin (the tlm model"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "w.vcd"));
+  const Outcome bad = run_tb("--model tlmx --cos 1 --n 1", dir, "bad");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("pin, core, tlm"), std::string::npos) << bad.err;
+}
+
+// In process: run_operations(Model::tlm) against the double reference, with the
+// annotated latency in periods of the configured clock.
+TEST(TlmTb, RunOperationsThroughTheTarget) {
+  using namespace specular;
+  tb::RunSettings settings;
+  settings.model = tb::Model::tlm;
+  settings.clock_period_ps = 8000;
+  settings.chunk_size = 3;
+  const Core core(settings.config);
+  std::vector<Operands> ops;
+  for (const auto& [cos, n, r, g, b] : std::vector<std::tuple<double, int, int, int, int>>{
+           {0.0, 1, 255, 255, 255}, {1.0, 1, 255, 255, 255}, {0.9, 10, 200, 100, 50},
+           {1 - 1.0 / 65536, 1000, 1, 2, 3}, {0.999, 1000, 1, 2, 3}, {0.25, 2, 0, 0, 0},
+           {0.5, 2, 7, 7, 7}})
+    ops.push_back(core.operands(cos, n, r, g, b));
+  std::vector<Result> results;
+  std::vector<double> cycles;
+  tb::run_operations(settings, ops, results, cycles);
+  ASSERT_EQ(results.size(), ops.size());
+  const Formats& f = core.formats();
+  for (std::size_t i = 0; i < ops.size(); ++i) {
+    SCOPED_TRACE(i);
+    const unsigned n = static_cast<unsigned>(ops[i].n);
+    const double cos_q = std::ldexp(static_cast<double>(ops[i].cos), -16);
+    const double log2_cos = ops[i].cos == 0 ? -16.0 : std::log2(cos_q);
+    const double a = std::max(0.0, 1 - 0.5 * std::log2(1 - n * log2_cos));
+    const double k = 2 * M_PI / (n + 2);
+    EXPECT_EQ(results[i].reg1, ops[i].cos);
+    EXPECT_NEAR(f.reg9.to_real(results[i].reg9_pass1), 1 - n * log2_cos, 1e-3 * n);
+    EXPECT_NEAR(f.reg9.to_real(results[i].reg9_pass2), a, reference::approx_tolerance());
+    EXPECT_NEAR(f.norm.to_real(results[i].norm39), k * a, reference::norm_tolerance(k));
+    for (int ch = 0; ch < 3; ++ch)
+      EXPECT_NEAR(f.out.to_real(results[i].out[ch]), k * a * ops[i].rgb[ch],
+                  reference::out_tolerance(k, double(ops[i].rgb[ch]), f.out.lsb()));
+    EXPECT_EQ(cycles[i], 2.5);
+  }
+}
+
+}  // namespace

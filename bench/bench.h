@@ -63,7 +63,8 @@ long peak_memory_kb();
 double now_seconds();
 
 // ---- the models: each measures itself and prints its figures -----------------------
-void measure_pow(const Plan& plan);
+/// `name`: pow, or pow_end (the yardstick measured again after every model).
+void measure_pow(const Plan& plan, const std::string& name);
 void measure_core(const Plan& plan);
 /// The pin-level device (PinHarness). `stream`: n/RGB held per block; `vcd`: real views
 /// on and every net traced to plan.vcd_path.
@@ -74,6 +75,7 @@ struct TlmOptions {
   bool pin = false;      ///< SpecularPinTarget (the netlist behind a transactor), else lt
   bool batch = false;    ///< BATCH_COS bursts on the streaming inputs, else compute() per result
   sc_core::sc_time quantum;  ///< global quantum of the tlm_quantumkeeper; zero: no decoupling
+  bool burst = false;    ///< compute_burst() per result (OPERANDS / RESULTS), else compute()
 };
 void measure_tlm(const Plan& plan, const std::string& name, const TlmOptions& options);
 

@@ -7,7 +7,7 @@
 
 namespace specular_bench {
 
-void measure_pow(const Plan& plan) {
+void measure_pow(const Plan& plan, const std::string& name) {
   const specular::Core core;
   const std::vector<Operands> ring = random_operands(core, plan.seed);
   // cos λ as the real number register 1 holds, n as a double: what a shader would call.
@@ -25,9 +25,9 @@ void measure_pow(const Plan& plan) {
     }
     best = std::min(best, now_seconds() - t0);
   }
-  print_figure("pow_rate", static_cast<double>(plan.ops) / best / 1e6, "Mevals/s");
-  print_figure("pow_work", work, "sum");  // printed so the optimiser must compute it
-  print_figure("pow_peak_memory", static_cast<double>(peak_memory_kb()), "kB");
+  print_figure(name + "_rate", static_cast<double>(plan.ops) / best / 1e6, "Mevals/s");
+  print_figure(name + "_work", work, "sum");  // printed so the optimiser must compute it
+  print_figure(name + "_peak_memory", static_cast<double>(peak_memory_kb()), "kB");
 }
 
 void measure_core(const Plan& plan) {
@@ -54,6 +54,8 @@ void measure_core(const Plan& plan) {
     best = std::min(best, now_seconds() - t0);
   }
   print_figure("core_rate", static_cast<double>(plan.ops) / best / 1e6, "Mresults/s");
+  // 1: the default widths, run with compile-time formats (core.h DefaultFormats).
+  print_figure("core_default_formats", core.uses_default_formats() ? 1 : 0, "bool");
   print_checksum("core_checksum", random_set.value);
   print_checksum("core_stream_checksum", stream_set.value);
   print_checksum("core_work", work);

@@ -72,6 +72,10 @@ class TlmBench : public sc_core::sc_module {
                                out.data());
           for (std::size_t j = 0; j < count; ++j) add(first + j, &out[3 * j]);
         }
+      } else if (options_.burst) {
+        // The fast path: OPERANDS (COS, N, R, G, B, START) and RESULTS, two bursts per result.
+        for (std::size_t i = 0; i < plan_.ops; ++i)
+          add(i, driver.compute_burst(ring_[i % ring_size]).data());
       } else {
         for (std::size_t i = 0; i < plan_.ops; ++i) add(i, driver.compute(ring_[i % ring_size]).data());
       }

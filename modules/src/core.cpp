@@ -2,11 +2,29 @@
 
 namespace specular {
 
+namespace {
+bool same(const FixedFormat& a, const FixedFormat& b) {
+  return a.is_signed == b.is_signed && a.int_bits == b.int_bits && a.frac_bits == b.frac_bits;
+}
+
+/// Every constant the core's hot path reads from DefaultFormats, compared with the
+/// run-time formats: only then may run() use the constants.
+bool is_default(const Formats& f) {
+  using D = DefaultFormats;
+  return same(f.cos, D::cos) && same(f.n, D::n) && same(f.rgb, D::rgb) && same(f.mux4, D::mux4) &&
+         same(f.log2, D::log2) && same(f.reg9, D::reg9) && same(f.rom38, D::rom38) &&
+         same(f.norm, D::norm) && same(f.out, D::out) &&
+         f.widths.rom5_addr_bits == D::widths.rom5_addr_bits &&
+         f.half_code() == D::half_code() && f.one_code() == D::one_code();
+}
+}  // namespace
+
 Core::Core(const Config& config)
     : config_(config),
       formats_(config.widths),
       rom5_(formats_),
-      rom38_(formats_, config.normalisation) {}
+      rom38_(formats_, config.normalisation),
+      default_formats_(is_default(formats_)) {}
 
 Operands Core::operands(double cos_lambda, long long n, long long r, long long g,
                         long long b) const {

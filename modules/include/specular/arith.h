@@ -13,6 +13,11 @@
 namespace specular {
 namespace arith {
 
+// The block functions take their formats as `const FormatSet&`: the run-time Formats
+// (SC_MODULEs, Core with any widths) or Core's DefaultFormats, whose members are
+// compile-time constants, so that every shift and mask folds into an immediate on the
+// core's hot path (docs/performance.md). Same code, same bits either way.
+
 /// Wrap a code to `format`'s width, as a bus of that width would (two's complement).
 /// Two shifts: the bits above the width leave at the top, and shifting back
 /// sign-extends a signed bus (the same value as mask-and-extend, fewer instructions).
@@ -36,6 +41,17 @@ inline __int128 round_shift(__int128 value, int shift) {
   return (value + (__int128{1} << (shift - 1))) >> shift;
 }
 
+/// The 128-bit tails of the multipliers, out of line: never taken at the default
+/// widths, they would only crowd the core's hot loop (docs/performance.md).
+[[gnu::cold, gnu::noinline]] inline code_t wide_multiply_round_saturate(const FixedFormat& format,
+                                                                       code_t a, code_t b, int shift) {
+  return saturate(format, round_shift(static_cast<__int128>(a) * b, shift));
+}
+[[gnu::cold, gnu::noinline]] inline code_t wide_multiply_round_wrap(const FixedFormat& format,
+                                                                   code_t a, code_t b, int shift) {
+  return wrap(format, static_cast<code_t>(round_shift(static_cast<__int128>(a) * b, shift)));
+}
+
 /// a × b with `shift` fraction bits dropped (rounding half up), saturated to `format`:
 /// the tail of multipliers 39 and 13–15. On 64 bits when neither the product nor the
 /// rounding overflows (always, at the default widths: docs/performance.md), otherwise
@@ -50,12 +66,13 @@ inline code_t multiply_round_saturate(const FixedFormat& format, code_t a, code_
     if (above == 0 || (format.is_signed && above == -1)) return value;
     return value < 0 ? format.min_code() : format.max_code();
   }
-  return saturate(format, round_shift(static_cast<__int128>(a) * b, shift));
+  return wide_multiply_round_saturate(format, a, b, shift);
 }
 
 // ---- Multiplexer 3: ROM 5 address bus -------------------------------------------
 /// in0 = register 1 (cos λ, U1.16) aligned to register 9's format, in1 = register 9.
-inline code_t mux3(const Formats& f, bool select36, code_t reg1, code_t reg9) {
+template <class FormatSet>
+inline code_t mux3(const FormatSet& f, bool select36, code_t reg1, code_t reg9) {
   return select36 ? reg9 : reg1 << (f.reg9.frac_bits - f.cos.frac_bits);
 }
 
@@ -70,14 +87,26 @@ class Rom5Table {
   explicit Rom5Table(const Formats& formats);
   /// log2 of a multiplexer-3 code, in ROM 5's output format.
   code_t log2(code_t bus) const {
-    if (bus <= 0) return zero_log2_;
+    return lookup(words_.data(), addr_bits_, word_bits_, bus_frac_bits_, zero_log2_, bus);
+  }
+  /// The same, with the organisation read from a FormatSet (constants for the core's
+  /// DefaultFormats). Only valid for the formats this table was built from.
+  template <class FormatSet>
+  code_t log2(const FormatSet& f, code_t bus) const {
+    return lookup(words_.data(), f.widths.rom5_addr_bits, f.log2.frac_bits, f.reg9.frac_bits,
+                  -(static_cast<code_t>(f.cos.frac_bits) << f.log2.frac_bits), bus);
+  }
+  /// The leading-one detector and the mantissa ROM: written once for both log2()s.
+  static code_t lookup(const std::uint32_t* words, int addr_bits, int word_bits,
+                       int bus_frac_bits, code_t zero_log2, code_t bus) {
+    if (bus <= 0) return zero_log2;
     const int msb = 63 - __builtin_clzll(static_cast<std::uint64_t>(bus));
     // The leading one moves to bit 63 and out; the next addr_bits bits are the address
     // (zero-filled when fewer bits follow the leading one).
     const std::uint64_t aligned = (static_cast<std::uint64_t>(bus) << (63 - msb)) << 1;
-    const std::uint64_t address = aligned >> (64 - addr_bits_);
-    const code_t exponent = msb - bus_frac_bits_;
-    return exponent * (code_t{1} << word_bits_) + words_[address];
+    const std::uint64_t address = aligned >> (64 - addr_bits);
+    const code_t exponent = msb - bus_frac_bits;
+    return exponent * (code_t{1} << word_bits) + words[address];
   }
   /// The table itself, for reports and tests: word a = round(log2(1 + a/2^M) · 2^W).
   const std::vector<std::uint32_t>& words() const { return words_; }
@@ -92,30 +121,33 @@ class Rom5Table {
 
 // ---- Multiplexer 4: multiplier 6's second operand ------------------------------
 /// in0 = register 2 (n), in1 = pin 19 (the constant ½); both on the U10.1 bus.
-inline code_t mux4(const Formats& f, bool select36, code_t reg2, code_t pin19_half) {
+template <class FormatSet>
+inline code_t mux4(const FormatSet& f, bool select36, code_t reg2, code_t pin19_half) {
   return select36 ? pin19_half : reg2 << f.mux4.frac_bits;
 }
 
 // ---- Multiplier 6 -------------------------------------------------------------
 /// log2 × (n or ½), rounded to nearest to adder 8's format and wrapped to its width.
-inline code_t mul6(const Formats& f, code_t rom5_log2, code_t mux4_operand) {
+template <class FormatSet>
+inline code_t mul6(const FormatSet& f, code_t rom5_log2, code_t mux4_operand) {
   const int shift = f.log2.frac_bits + f.mux4.frac_bits - f.reg9.frac_bits;
   code_t product, biased;
   if (shift > 0 && !__builtin_mul_overflow(rom5_log2, mux4_operand, &product) &&
       !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased))
     return wrap(f.reg9, biased >> shift);  // 64 bits suffice (the default widths)
-  const __int128 wide = static_cast<__int128>(rom5_log2) * mux4_operand;
-  return wrap(f.reg9, static_cast<code_t>(round_shift(wide, shift)));
+  return wide_multiply_round_wrap(f.reg9, rom5_log2, mux4_operand, shift);
 }
 
 // ---- Inverter block 7 ----------------------------------------------------------
 /// Bitwise NOT across the bus (with carry-in 34 this makes adder 8 subtract).
-inline code_t inv7(const Formats& f, code_t product) { return wrap(f.reg9, ~product); }
+template <class FormatSet>
+inline code_t inv7(const FormatSet& f, code_t product) { return wrap(f.reg9, ~product); }
 
 // ---- Combinational adder 8 -----------------------------------------------------
 /// pin 20 (1.0) + inverted product + carry-in 34 = 1 − product, modulo the bus width.
 /// Under Saturation::clamp a negative sum saturates at 0 (spec, Decision).
-inline code_t adder8(const Formats& f, Saturation saturation, code_t pin20_one, code_t inverted,
+template <class FormatSet>
+inline code_t adder8(const FormatSet& f, Saturation saturation, code_t pin20_one, code_t inverted,
                      bool carry34) {
   const code_t sum = wrap(f.reg9, pin20_one + inverted + (carry34 ? 1 : 0));
   return (saturation == Saturation::clamp && sum < 0) ? 0 : sum;
@@ -137,14 +169,16 @@ class Rom38Table {
 // ---- Multiplier 39 -------------------------------------------------------------
 /// register 9 × K(n), rounded to nearest, saturated to the norm format (between the
 /// two passes register 9 holds up to ~16 000; that garbage saturates silently).
-inline code_t mul39(const Formats& f, code_t reg9, code_t rom38_k) {
+template <class FormatSet>
+inline code_t mul39(const FormatSet& f, code_t reg9, code_t rom38_k) {
   const int shift = f.reg9.frac_bits + f.rom38.frac_bits - f.norm.frac_bits;
   return multiply_round_saturate(f.norm, reg9, rom38_k, shift);
 }
 
 // ---- Multipliers 13, 14, 15 ----------------------------------------------------
 /// K·A × intensity (register 10, 11 or 12), rounded and saturated to the pin format.
-inline code_t mul_rgb(const Formats& f, code_t norm39, code_t intensity) {
+template <class FormatSet>
+inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
   return multiply_round_saturate(f.out, norm39, intensity, f.norm.frac_bits - f.out.frac_bits);
 }
 

@@ -36,6 +36,25 @@ struct Result {
   std::array<code_t, 3> out{};    ///< pins 24, 25, 26
 };
 
+/// The formats Formats(Widths{}) derives (docs/design.md), as compile-time constants.
+/// Core checks at construction that its formats equal these and then runs with them,
+/// so shifts, masks and rounding constants are immediates (docs/performance.md: about
+/// 2x on the core); other widths run the same functions on the run-time Formats.
+struct DefaultFormats {
+  static constexpr Widths widths{};
+  static constexpr FixedFormat cos{false, 1, 16};
+  static constexpr FixedFormat n{false, 10, 0};
+  static constexpr FixedFormat rgb{false, 8, 0};
+  static constexpr FixedFormat mux4{false, 10, 1};
+  static constexpr FixedFormat log2{true, 5, 22};
+  static constexpr FixedFormat reg9{true, 14, 22};
+  static constexpr FixedFormat rom38{false, 8, 16};
+  static constexpr FixedFormat norm{true, 10, 20};
+  static constexpr FixedFormat out{true, 18, 13};
+  static constexpr code_t half_code() { return code_t{1} << (mux4.frac_bits - 1); }
+  static constexpr code_t one_code() { return reg9.one(); }
+};
+
 class Core {
  public:
   explicit Core(const Config& config = Config{});
@@ -43,25 +62,14 @@ class Core {
   /// One operation: pass 1 (select 36 = 0), pass 2 (select 36 = 1), then the
   /// combinational tail (ROM 38, multiplier 39, multipliers 13–15).
   Result run(const Operands& in) const {
-    Result r;
-    r.reg1 = in.cos;
-    r.reg9_pass1 = pass(false, in.cos, 0, in.n);
-    r.reg9_pass2 = pass(true, in.cos, r.reg9_pass1, in.n);
-    r.rom38_k = rom38_.k(in.n);
-    r.norm39 = arith::mul39(formats_, r.reg9_pass2, r.rom38_k);
-    for (int ch = 0; ch < 3; ++ch) r.out[ch] = arith::mul_rgb(formats_, r.norm39, in.rgb[ch]);
-    return r;
+    return default_formats_ ? run_with(DefaultFormats{}, in) : run_with(formats_, in);
   }
 
-  /// The combinational path from registers 1, 2, 9 to adder 8's output, for a
-  /// given select 36: multiplexers 3, 4 → ROM 5 → multiplier 6 → inverter 7 → adder 8.
-  code_t pass(bool select36, code_t reg1, code_t reg9, code_t reg2) const {
-    const code_t address = arith::mux3(formats_, select36, reg1, reg9);
-    const code_t operand = arith::mux4(formats_, select36, reg2, formats_.half_code());
-    const code_t product = arith::mul6(formats_, rom5_.log2(address), operand);
-    return arith::adder8(formats_, config_.saturation, formats_.one_code(),
-                         arith::inv7(formats_, product), true);
-  }
+  /// True when the formats are the defaults and run() takes the constant-folded path.
+  bool uses_default_formats() const { return default_formats_; }
+  /// run() on the run-time Formats even where the constant path applies: the test
+  /// that proves both paths give the same bits calls it (tests/test_bench_core_paths.cpp).
+  Result run_generic(const Operands& in) const { return run_with(formats_, in); }
 
   /// Operands from user values: checks ranges (throws std::out_of_range naming the
   /// value and its allowed range) and quantises cos λ to register 1's format.
@@ -73,10 +81,33 @@ class Core {
   const arith::Rom38Table& rom38() const { return rom38_; }
 
  private:
+  template <class FormatSet>
+  Result run_with(const FormatSet& f, const Operands& in) const {
+    Result r;
+    r.reg1 = in.cos;
+    r.reg9_pass1 = pass(f, false, in.cos, 0, in.n);
+    r.reg9_pass2 = pass(f, true, in.cos, r.reg9_pass1, in.n);
+    r.rom38_k = rom38_.k(in.n);
+    r.norm39 = arith::mul39(f, r.reg9_pass2, r.rom38_k);
+    for (int ch = 0; ch < 3; ++ch) r.out[ch] = arith::mul_rgb(f, r.norm39, in.rgb[ch]);
+    return r;
+  }
+
+  /// The combinational path from registers 1, 2, 9 to adder 8's output, for a
+  /// given select 36: multiplexers 3, 4 → ROM 5 → multiplier 6 → inverter 7 → adder 8.
+  template <class FormatSet>
+  code_t pass(const FormatSet& f, bool select36, code_t reg1, code_t reg9, code_t reg2) const {
+    const code_t address = arith::mux3(f, select36, reg1, reg9);
+    const code_t operand = arith::mux4(f, select36, reg2, f.half_code());
+    const code_t product = arith::mul6(f, rom5_.log2(f, address), operand);
+    return arith::adder8(f, config_.saturation, f.one_code(), arith::inv7(f, product), true);
+  }
+
   Config config_;
   Formats formats_;
   arith::Rom5Table rom5_;
   arith::Rom38Table rom38_;
+  bool default_formats_;
 };
 
 }  // namespace specular

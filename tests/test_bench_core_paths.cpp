@@ -1,0 +1,52 @@
+// The core's constant-folded path (DefaultFormats, docs/performance.md) gives the
+// same bits as the same block functions on the run-time Formats, under every policy.
+// Sampled here (every 13th cos code, the ends and the codes next to them, every n);
+// the one-off exhaustive run over all 65 537 × 1000 inputs is in docs/performance.md.
+#include <gtest/gtest.h>
+
+#include "specular/core.h"
+
+namespace specular {
+namespace {
+
+TEST(BenchCorePaths, ConstantPathEqualsRunTimeFormatsPath) {
+  for (const Saturation saturation : {Saturation::clamp, Saturation::literal}) {
+    for (const Normalisation policy : {Normalisation::patent, Normalisation::energy, Normalisation::none}) {
+      Config config;
+      config.saturation = saturation;
+      config.normalisation = policy;
+      const Core core(config);
+      ASSERT_TRUE(core.uses_default_formats());
+      const code_t one = core.formats().cos.one();
+      long mismatches = 0;
+      Operands in;
+      for (code_t c = 0; c <= one; c = (c < 2 || c >= one - 2) ? c + 1 : std::min(c + 13, one - 2)) {
+        for (code_t n = 1; n <= 1000; ++n) {
+          in.cos = c;
+          in.n = n;
+          in.rgb = {255, (c + n) & 255, (c * 7 + n) & 255};
+          const Result fast = core.run(in);
+          const Result generic = core.run_generic(in);
+          const bool same = fast.reg9_pass1 == generic.reg9_pass1 &&
+                            fast.reg9_pass2 == generic.reg9_pass2 && fast.rom38_k == generic.rom38_k &&
+                            fast.norm39 == generic.norm39 && fast.out == generic.out;
+          if (!same && ++mismatches <= 5)
+            ADD_FAILURE() << "cos code " << c << ", n " << n << ": paths differ";
+        }
+      }
+      EXPECT_EQ(mismatches, 0) << to_string(policy) << " / " << to_string(saturation);
+    }
+  }
+}
+
+TEST(BenchCorePaths, OtherWidthsTakeTheRunTimePath) {
+  Config config;
+  config.widths.reg9_frac_bits = 24;  // not the default: the constants must not apply
+  EXPECT_FALSE(Core(config).uses_default_formats());
+  config.widths = Widths{};
+  config.widths.rom5_addr_bits = 14;  // same bus formats, another ROM 5 organisation
+  EXPECT_FALSE(Core(config).uses_default_formats());
+}
+
+}  // namespace
+}  // namespace specular

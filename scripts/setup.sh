@@ -16,6 +16,8 @@ set -euo pipefail
 #   graphviz                            scripts/render_figures.sh (docs/fig1.svg, fig2.svg)
 #   python3-numpy, python3-matplotlib   plots of the numerical study
 #   gnuplot-nox                         quick plots from the testbench's CSV output
+#   clang-14, libclang-rt-14-dev        scripts/fuzz.sh: libFuzzer and clang's sanitizer
+#                                       runtimes (libclang_rt.fuzzer, asan, ubsan)
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev
@@ -24,6 +26,7 @@ PACKAGES=(
   graphviz
   python3-numpy python3-matplotlib
   gnuplot-nox
+  clang-14 libclang-rt-14-dev
 )
 OPTIONAL_GTKWAVE=(gtkwave)
 

@@ -169,6 +169,11 @@ TEST(ProtocolChecker, RegisterWritesBetweenStartAndDoneAreReported) {
 }
 
 TEST(ProtocolChecker, MisuseCanBeRaisedToAnErrorOrFiltered) {
+#if defined(__SANITIZE_ADDRESS__)
+  // The sc_report thrown on a QuickThreads stack of Debian's libsystemc (built without
+  // ASan's fiber annotations) trips ASan's no-return handler: a known false positive.
+  GTEST_SKIP() << "an exception out of an SC_THREAD is not supported under ASan here";
+#endif
   // What a user does to stop on a lost start but ignore early (yet working) starts.
   sc_core::sc_report_handler::set_actions(report::start_while_busy,
                                           sc_core::SC_DISPLAY | sc_core::SC_THROW);

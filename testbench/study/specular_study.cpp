@@ -65,6 +65,11 @@ std::string summarise(const ErrorSummary& errors, const std::vector<EnergyRow>& 
 
 }  // namespace
 
+// libsystemc.so comes with the IP library and refers to the program's sc_main. This
+// tool never starts SystemC, but in a sanitizer build the library stays loaded (it
+// exports libstdc++ code the instrumented objects use) and binds sc_main at load time.
+extern "C" int sc_main(int, char**) { return 0; }
+
 int main(int argc, char** argv) {
   StudyOptions options;
   try {

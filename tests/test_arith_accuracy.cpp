@@ -7,11 +7,12 @@
 #include <tuple>
 
 #include "support/accuracy_sweep.h"
+#include "support/policies.h"
 
 namespace specular {
 namespace {
 
-class Sampled : public ::testing::TestWithParam<std::tuple<Normalisation, Saturation>> {};
+class Sampled : public testing_support::PolicyTest {};
 
 TEST_P(Sampled, EveryNAndSampledCosCodesMeetTheBounds) {
   Config config;
@@ -32,15 +33,8 @@ TEST_P(Sampled, EveryNAndSampledCosCodesMeetTheBounds) {
   EXPECT_EQ(s.pass1_misses, 0) << s.first_miss;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Policies, Sampled,
-    ::testing::Combine(::testing::Values(Normalisation::patent, Normalisation::energy,
-                                         Normalisation::none),
-                       ::testing::Values(Saturation::clamp, Saturation::literal)),
-    [](const auto& info) {
-      return std::string(to_string(std::get<0>(info.param))) + "_" +
-             to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(Policies, Sampled, testing_support::every_policy(),
+                         testing_support::policy_name);
 
 // The near-1 corner the issue warns about: pass 1's error is multiplied by n, so the
 // largest n with the last code below 1.0 is where a short log2 path shows first.

@@ -1,6 +1,5 @@
 // specular_tb as a user runs it: a subprocess, its exit status, its files.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
 #include <cmath>
@@ -11,47 +10,27 @@
 #include <map>
 #include <sstream>
 
+#include "support/subprocess.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using specular::testing_support::Outcome;
+using specular::testing_support::run_command;
+using specular::testing_support::slurp;
 
 /// A fresh, empty scratch directory for one test.
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("specular_tb_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return specular::testing_support::fresh_directory("specular_tb_" + name);
 }
 
 /// Runs specular_tb with `arguments` (or, with `whole_command`, runs `arguments` as
-/// the shell command itself); standard output and error are captured through files
-/// in `dir`, removed again before returning.
+/// the shell command itself); `dir` holds the captured output only while it runs.
 Outcome run_tb(const std::string& arguments, const fs::path& dir, bool whole_command = false) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = (whole_command ? arguments : "'" + tb + "' " + arguments) + " >'" +
-                              out.string() + "' 2>'" + err.string() + "' </dev/null";
-  const int raw = std::system(command.c_str());
-  Outcome r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+  return run_command(whole_command ? arguments : "'" + tb + "' " + arguments, dir);
 }
 
 std::vector<std::string> files_in(const fs::path& dir) {

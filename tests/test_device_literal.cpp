@@ -10,6 +10,7 @@
 #include "specular/core.h"
 #include "specular/reference.h"
 #include "support/pins_run.h"
+#include "support/policies.h"
 
 namespace specular {
 namespace {
@@ -39,7 +40,7 @@ double formula(const Operands& op) {
   return 1.0 - 0.5 * std::log2(1.0 - op.n * std::log2(cos_q));
 }
 
-class DeviceSaturation : public ::testing::TestWithParam<std::tuple<Normalisation, Saturation>> {};
+class DeviceSaturation : public testing_support::PolicyTest {};
 
 TEST_P(DeviceSaturation, NegativeWhereTheFormulaIsNegativeOnlyUnderLiteral) {
   Config config;
@@ -92,15 +93,8 @@ TEST_P(DeviceSaturation, NegativeWhereTheFormulaIsNegativeOnlyUnderLiteral) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Policies, DeviceSaturation,
-    ::testing::Combine(::testing::Values(Normalisation::patent, Normalisation::energy,
-                                         Normalisation::none),
-                       ::testing::Values(Saturation::clamp, Saturation::literal)),
-    [](const auto& info) {
-      return std::string(to_string(std::get<0>(info.param))) + "_" +
-             to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(Policies, DeviceSaturation, testing_support::every_policy(),
+                         testing_support::policy_name);
 
 // The deepest negative value: n = 1000, cos λ = 0 gives A = 1 − ½·log2(16 001) ≈ −5.98
 // (spec: "A reaches −6.1 at n = 1000, cos λ → 0"; −16 is log2 0 by Decision).

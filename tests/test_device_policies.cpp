@@ -11,6 +11,7 @@
 #include "specular/core.h"
 #include "specular/reference.h"
 #include "support/pins_run.h"
+#include "support/policies.h"
 
 namespace specular {
 namespace {
@@ -45,7 +46,7 @@ std::vector<Operands> sampled_operations(unsigned seed) {
   return ops;
 }
 
-class DevicePolicies : public ::testing::TestWithParam<std::tuple<Normalisation, Saturation>> {};
+class DevicePolicies : public testing_support::PolicyTest {};
 
 TEST_P(DevicePolicies, PinsMatchTheReferenceAndTheCoreBitForBit) {
   Config config;
@@ -99,15 +100,8 @@ TEST_P(DevicePolicies, PinsMatchTheReferenceAndTheCoreBitForBit) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Policies, DevicePolicies,
-    ::testing::Combine(::testing::Values(Normalisation::patent, Normalisation::energy,
-                                         Normalisation::none),
-                       ::testing::Values(Saturation::clamp, Saturation::literal)),
-    [](const auto& info) {
-      return std::string(to_string(std::get<0>(info.param))) + "_" +
-             to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(Policies, DevicePolicies, testing_support::every_policy(),
+                         testing_support::policy_name);
 
 // Another clock period: the protocol is in periods, so cycles stay 2.5 and results equal.
 TEST(DeviceClock, ResultsAndCyclesDoNotDependOnThePeriod) {

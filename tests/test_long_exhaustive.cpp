@@ -8,13 +8,14 @@
 #include <tuple>
 
 #include "support/accuracy_sweep.h"
+#include "support/policies.h"
 
 namespace specular {
 namespace {
 
 using testing_support::SweepFigures;
 
-class Exhaustive : public ::testing::TestWithParam<std::tuple<Normalisation, Saturation>> {};
+class Exhaustive : public testing_support::PolicyTest {};
 
 TEST_P(Exhaustive, EveryNAndEveryCosCodeMeetsTheBounds) {
   Config config;
@@ -36,15 +37,8 @@ TEST_P(Exhaustive, EveryNAndEveryCosCodeMeetsTheBounds) {
   EXPECT_EQ(s.pass1_misses, 0) << s.first_miss;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Policies, Exhaustive,
-    ::testing::Combine(::testing::Values(Normalisation::patent, Normalisation::energy,
-                                         Normalisation::none),
-                       ::testing::Values(Saturation::clamp, Saturation::literal)),
-    [](const auto& info) {
-      return std::string(to_string(std::get<0>(info.param))) + "_" +
-             to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(Policies, Exhaustive, testing_support::every_policy(),
+                         testing_support::policy_name);
 
 }  // namespace
 }  // namespace specular

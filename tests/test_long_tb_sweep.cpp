@@ -14,12 +14,13 @@
 #include "run_models.h"
 #include "scoreboard.h"
 #include "specular/core.h"
+#include "support/policies.h"
 
 namespace specular {
 namespace tb {
 namespace {
 
-class PinSweep : public ::testing::TestWithParam<std::tuple<Normalisation, Saturation>> {};
+class PinSweep : public testing_support::PolicyTest {};
 
 TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) {
   RunSettings settings;
@@ -73,15 +74,8 @@ TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) {
   EXPECT_EQ(s.cycles_max, 2.5);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Policies, PinSweep,
-    ::testing::Combine(::testing::Values(Normalisation::patent, Normalisation::energy,
-                                         Normalisation::none),
-                       ::testing::Values(Saturation::clamp, Saturation::literal)),
-    [](const auto& info) {
-      return std::string(to_string(std::get<0>(info.param))) + "_" +
-             to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(Policies, PinSweep, testing_support::every_policy(),
+                         testing_support::policy_name);
 
 }  // namespace
 }  // namespace tb

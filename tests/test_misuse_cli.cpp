@@ -4,7 +4,6 @@
 // the allowed range, prints nothing on standard output and leaves no output file.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,45 +14,27 @@
 #include <string>
 #include <vector>
 
+#include "support/subprocess.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
 
-struct Outcome {
-  int status = -1;
-  bool signalled = false;  ///< killed by a signal: a crash
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using specular::testing_support::Outcome;
+using specular::testing_support::run_command;
+using specular::testing_support::slurp;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("specular_misuse_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return specular::testing_support::fresh_directory("specular_misuse_" + name);
 }
 
 /// Runs specular_tb with `arguments` (shell words) in `dir`; stdout/stderr are kept
 /// outside `dir` so that `dir` shows only what the run left.
 Outcome run_tb(const std::string& arguments, const fs::path& dir) {
   const fs::path logs = scratch("logs_" + dir.filename().string());
-  const fs::path out = logs / "stdout.txt", err = logs / "stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && '" + tb + "' " + arguments + " >'" +
-                              out.string() + "' 2>'" + err.string() + "' </dev/null";
-  const int raw = std::system(command.c_str());
-  Outcome r;
-  r.signalled = WIFSIGNALED(raw);
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
+  const Outcome r = run_command("cd '" + dir.string() + "' && '" + tb + "' " + arguments, logs);
   fs::remove_all(logs);
   return r;
 }

@@ -2,7 +2,6 @@
 // header, shows progress on stderr, and bad command lines are refused. The plotting
 // script draws every picture from that run when Debian's python has matplotlib.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -15,23 +14,17 @@
 #include <string>
 #include <vector>
 
+#include "support/subprocess.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string study = SPECULAR_STUDY_EXE;
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using specular::testing_support::Outcome;
+using specular::testing_support::run_command;
+using specular::testing_support::slurp;
 
 /// A fresh, empty directory for one test, removed when the test ends.
 struct Scratch {
@@ -50,18 +43,6 @@ struct Scratch {
   Scratch& operator=(const Scratch&) = delete;
   const fs::path path;
 };
-
-Outcome run(const std::string& command_line, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command =
-      command_line + " >'" + out.string() + "' 2>'" + err.string() + "' </dev/null";
-  const int raw = std::system(command.c_str());
-  Outcome r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
-}
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> cells;
@@ -110,7 +91,7 @@ const std::vector<std::string> heatmaps = {"heatmap_device_clamp.csv", "heatmap_
 
 /// Runs the quick study once per process into `dir`; returns its outcome.
 Outcome quick_run(const fs::path& dir) {
-  return run("'" + study + "' --quick --workers 2 --out '" + (dir / "out").string() + "'", dir);
+  return run_command("'" + study + "' --quick --workers 2 --out '" + (dir / "out").string() + "'", dir);
 }
 
 }  // namespace
@@ -174,22 +155,22 @@ TEST(StudyExecutable, QuickRunIntegralsMatchClosedForms) {
 TEST(StudyExecutable, BadCommandLinesAreRefused) {
   const Scratch scratch("bad");
   const fs::path& dir = scratch.path;
-  const Outcome zero = run("'" + study + "' --workers 0", dir);
+  const Outcome zero = run_command("'" + study + "' --workers 0", dir);
   EXPECT_EQ(zero.status, 2);
   EXPECT_NE(zero.err.find("--workers 0 is outside the allowed range [1, 64]"), std::string::npos)
       << zero.err;
-  const Outcome word = run("'" + study + "' --workers two", dir);
+  const Outcome word = run_command("'" + study + "' --workers two", dir);
   EXPECT_EQ(word.status, 2);
   EXPECT_NE(word.err.find("two"), std::string::npos) << word.err;
-  const Outcome unknown = run("'" + study + "' --fast", dir);
+  const Outcome unknown = run_command("'" + study + "' --fast", dir);
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.err.find("unknown argument '--fast'"), std::string::npos) << unknown.err;
-  const Outcome missing = run("'" + study + "' --out", dir);
+  const Outcome missing = run_command("'" + study + "' --out", dir);
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("--out needs a value"), std::string::npos) << missing.err;
   // An output directory that cannot be created (its parent is a file).
   std::ofstream(dir / "a_file") << "x";
-  const Outcome blocked = run("'" + study + "' --quick --out '" + (dir / "a_file" / "sub").string() + "'", dir);
+  const Outcome blocked = run_command("'" + study + "' --quick --out '" + (dir / "a_file" / "sub").string() + "'", dir);
   EXPECT_EQ(blocked.status, 1);
   EXPECT_NE(blocked.err.find("cannot create directory"), std::string::npos) << blocked.err;
 }
@@ -201,7 +182,7 @@ TEST(StudyExecutable, PlotScriptDrawsEveryPicture) {
   const Scratch scratch("plot");
   const fs::path& dir = scratch.path;
   ASSERT_EQ(quick_run(dir).status, 0);
-  const Outcome r = run(python + " '" + std::string(SPECULAR_SOURCE_DIR) +
+  const Outcome r = run_command(python + " '" + std::string(SPECULAR_SOURCE_DIR) +
                             "/scripts/plot_study.py' '" + (dir / "out").string() + "' '" +
                             (dir / "png").string() + "'",
                         dir);
@@ -218,7 +199,7 @@ TEST(StudyExecutable, PlotScriptDrawsEveryPicture) {
   }
   // A missing study directory is named.
   const Outcome missing =
-      run(python + " '" + std::string(SPECULAR_SOURCE_DIR) + "/scripts/plot_study.py' '" +
+      run_command(python + " '" + std::string(SPECULAR_SOURCE_DIR) + "/scripts/plot_study.py' '" +
               (dir / "nothing").string() + "' '" + (dir / "png").string() + "'",
           dir);
   EXPECT_NE(missing.status, 0);

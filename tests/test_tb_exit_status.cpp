@@ -4,6 +4,7 @@
 // held to are written here from the text: 2^-10, 2^-10·max(1, K),
 // 2^-10·max(1, K)·I + 1 output LSB (2^-13), 2.5 periods.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -42,8 +43,11 @@ const std::string three_points =
     "0.5,1,255,255,255\n"
     "1,1000,7,8,9\n";
 
+/// One file per process: ctest runs this file's tests as parallel processes, and a
+/// shared name let one test rewrite the file while another was reading it.
 std::string temp_input() {
-  const std::string path = testing::TempDir() + "specular_tb_exit_status.csv";
+  const std::string path =
+      testing::TempDir() + "specular_tb_exit_status_" + std::to_string(::getpid()) + ".csv";
   std::ofstream(path) << three_points;
   return path;
 }

@@ -3,7 +3,6 @@
 // target's annotated latency (2.5 periods). Runs the executable as a user does, and
 // the model dispatch in process (one elaboration).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -17,41 +16,24 @@
 #include "specular/core.h"
 #include "specular/reference.h"
 
+#include "support/subprocess.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
 const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
 
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using specular::testing_support::Outcome;
+using specular::testing_support::run_command;
+using specular::testing_support::slurp;
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("specular_tlm_tb_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+  return specular::testing_support::fresh_directory("specular_tlm_tb_" + name);
 }
 
 Outcome run_tb(const std::string& arguments, const fs::path& dir, const std::string& tag) {
-  const fs::path out = dir / (tag + ".out"), err = dir / (tag + ".err");
-  const std::string command = "'" + tb + "' " + arguments + " >'" + out.string() + "' 2>'" +
-                              err.string() + "' </dev/null";
-  const int raw = std::system(command.c_str());
-  Outcome r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  return run_command("'" + tb + "' " + arguments, dir, tag);
 }
 
 std::vector<std::string> lines(const std::string& text) {

@@ -12,8 +12,8 @@ SpecularDriver::SpecularDriver(port_type& port, std::uint64_t base,
                                tlm_utils::tlm_quantumkeeper& keeper)
     : port_(port), base_(base), keeper_(keeper) {}
 
-void SpecularDriver::transport(tlm::tlm_command command, std::uint32_t offset,
-                               unsigned char* data, unsigned length, bool timed) {
+void SpecularDriver::prepare(tlm::tlm_command command, std::uint32_t offset, unsigned char* data,
+                             unsigned length) {
   tx_.set_command(command);
   tx_.set_address(base_ + offset);
   tx_.set_data_ptr(data);
@@ -23,6 +23,11 @@ void SpecularDriver::transport(tlm::tlm_command command, std::uint32_t offset,
   tx_.set_byte_enable_length(0);
   tx_.set_dmi_allowed(false);
   tx_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+}
+
+void SpecularDriver::transport(tlm::tlm_command command, std::uint32_t offset,
+                               unsigned char* data, unsigned length, bool timed) {
+  prepare(command, offset, data, length);
 
   sc_time local = keeper_.get_local_time();
   if (timed) {  // only operations are timed: sc_time_stamp() is a call into the kernel
@@ -43,12 +48,8 @@ void SpecularDriver::fail(tlm::tlm_command command, std::uint32_t offset, unsign
   // Ask the target why, as software would: read STATUS (through the same port).
   ErrorCause cause = ErrorCause::none;
   std::uint32_t status_word = 0;
-  tx_.set_command(tlm::TLM_READ_COMMAND);
-  tx_.set_address(base_ + offset_of(Reg::status));
-  tx_.set_data_ptr(reinterpret_cast<unsigned char*>(&status_word));
-  tx_.set_data_length(4);
-  tx_.set_streaming_width(4);
-  tx_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  prepare(tlm::TLM_READ_COMMAND, offset_of(Reg::status),
+          reinterpret_cast<unsigned char*>(&status_word), 4);
   sc_time local = keeper_.get_local_time();
   port_->b_transport(tx_, local);
   keeper_.set(local);

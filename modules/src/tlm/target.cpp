@@ -171,6 +171,8 @@ ErrorCause SpecularTarget::check_value(Reg reg, std::uint32_t value) const {
       return value > static_cast<std::uint64_t>(formats_.rgb.max_code())
                  ? ErrorCause::rgb_out_of_range
                  : ErrorCause::none;
+    case Reg::control:
+      return (value & ~control_bits::defined) ? ErrorCause::reserved_bits : ErrorCause::none;
     default: return ErrorCause::none;
   }
 }
@@ -194,8 +196,8 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
     }
     case Reg::control: {
       const std::uint32_t value = load(data);
-      if (value & ~control_bits::defined)
-        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::reserved_bits, address);
+      if (const ErrorCause cause = check_value(Reg::control, value); cause != ErrorCause::none)
+        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address);
       if (value & control_bits::start) {
         if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
         run(&word(Reg::cos), 1, &word(Reg::out_r), delay);
@@ -208,12 +210,7 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
       // All or nothing, as one register write each would check them: nothing is
       // stored (and nothing starts) unless every word is acceptable.
       for (std::uint32_t i = 0; i < words; ++i) {
-        const Reg reg = operand_register(first + i);
-        const std::uint32_t value = load(data + 4 * i);
-        const ErrorCause cause = reg == Reg::control
-                                     ? ((value & ~control_bits::defined) ? ErrorCause::reserved_bits
-                                                                         : ErrorCause::none)
-                                     : check_value(reg, value);
+        const ErrorCause cause = check_value(operand_register(first + i), load(data + 4 * i));
         if (cause != ErrorCause::none)
           return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i);
       }

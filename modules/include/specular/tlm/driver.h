@@ -66,6 +66,9 @@ class SpecularDriver {
   tlm_utils::tlm_quantumkeeper& keeper() { return keeper_; }
 
  private:
+  /// Sets up the one payload for a plain access (no byte enables, no streaming).
+  void prepare(tlm::tlm_command command, std::uint32_t offset, unsigned char* data,
+               unsigned length);
   /// `timed`: measure the transaction's duration into last_duration_ (operations only).
   void transport(tlm::tlm_command command, std::uint32_t offset, unsigned char* data,
                  unsigned length, bool timed = false);

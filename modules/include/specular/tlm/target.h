@@ -75,7 +75,8 @@ class SpecularTarget : public sc_core::sc_module {
   std::uint32_t peek(const RegisterInfo& row, std::uint32_t word) const;
   /// A debug write: storage rows only, range-checked, no side effects.
   bool poke(const RegisterInfo& row, std::uint32_t word, std::uint32_t value);
-  /// The range check of a storage row; ErrorCause::none when `value` is acceptable.
+  /// The value check of a write: the ranges of the operand rows, CONTROL's reserved
+  /// bits; ErrorCause::none when `value` is acceptable.
   ErrorCause check_value(Reg reg, std::uint32_t value) const;
   tlm::tlm_response_status refuse(tlm::tlm_response_status status, ErrorCause cause,
                                   std::uint64_t address);

@@ -66,9 +66,14 @@ double now_seconds();
 /// `name`: pow, or pow_end (the yardstick measured again after every model).
 void measure_pow(const Plan& plan, const std::string& name);
 void measure_core(const Plan& plan);
-/// The pin-level device (PinHarness). `stream`: n/RGB held per block; `vcd`: real views
-/// on and every net traced to plan.vcd_path.
-void measure_pin(const Plan& plan, const std::string& name, bool stream, bool vcd);
+/// What the pin-level device writes to plan.vcd_path while it runs.
+enum class Trace {
+  off,
+  vcd,             ///< every pin and net, as `specular_tb --vcd` traces them
+  vcd_real_views,  ///< the same plus the *_real views (`specular_tb --vcd --real-views`)
+};
+/// The pin-level device (PinHarness). `stream`: n/RGB held per block.
+void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace);
 
 /// How a TLM model is driven (SpecularDriver over a simple_initiator_socket).
 struct TlmOptions {

@@ -46,14 +46,17 @@ const std::vector<Model>& models() {
       {"pow", [](const Plan& p) { measure_pow(p, "pow"); }, 8'000'000, 200'000, 5, "std::pow(c, n) in double: the yardstick"},
       {"core", measure_core, 16'000'000, 200'000, 5, "bit-accurate core (Core::run)"},
       {"pin_vcd_off",
-       [](const Plan& p) { measure_pin(p, "pin_vcd_off", false, false); },
+       [](const Plan& p) { measure_pin(p, "pin_vcd_off", false, Trace::off); },
        400'000, 8192, 1, "pin-level device, random n/RGB every result (3 T), no trace"},
       {"pin_stream",
-       [](const Plan& p) { measure_pin(p, "pin_stream", true, false); },
+       [](const Plan& p) { measure_pin(p, "pin_stream", true, Trace::off); },
        400'000, 8192, 1, "pin-level device, n/RGB held per 256 results (2 T), no trace"},
       {"pin_vcd_on",
-       [](const Plan& p) { measure_pin(p, "pin_vcd_on", false, true); },
-       100'000, 4096, 1, "pin-level device as pin_vcd_off, real views on, every net to VCD"},
+       [](const Plan& p) { measure_pin(p, "pin_vcd_on", false, Trace::vcd); },
+       100'000, 4096, 1, "pin-level device as pin_vcd_off, every pin and net to VCD (specular_tb --vcd)"},
+      {"pin_vcd_real_views",
+       [](const Plan& p) { measure_pin(p, "pin_vcd_real_views", false, Trace::vcd_real_views); },
+       100'000, 4096, 1, "as pin_vcd_on, plus the *_real views (specular_tb --vcd --real-views)"},
       {"tlm_lt_quantum",
        [](const Plan& p) { measure_tlm(p, "tlm_lt_quantum", {false, false, sc_core::sc_time(1, sc_core::SC_US), true}); },
        4'000'000, 20'000, 3, "TLM lt target, SpecularDriver::compute_burst per result (fast path: OPERANDS + RESULTS bursts), 1 us quantum"},
@@ -75,16 +78,16 @@ const std::vector<Model>& models() {
       // How cost grows with the number of results: the same pin model, 1k to 100k
       // results (as many in --quick: growth is the point), with peak memory each.
       {"pin_growth_1k",
-       [](const Plan& p) { measure_pin(p, "pin_growth_1k", false, false); },
+       [](const Plan& p) { measure_pin(p, "pin_growth_1k", false, Trace::off); },
        1'000, 1'000, 1, "pin_vcd_off for 1 000 results (growth)", false},
       {"pin_growth_10k",
-       [](const Plan& p) { measure_pin(p, "pin_growth_10k", false, false); },
+       [](const Plan& p) { measure_pin(p, "pin_growth_10k", false, Trace::off); },
        10'000, 10'000, 1, "pin_vcd_off for 10 000 results (growth)", false},
       {"pin_growth_100k",
-       [](const Plan& p) { measure_pin(p, "pin_growth_100k", false, false); },
+       [](const Plan& p) { measure_pin(p, "pin_growth_100k", false, Trace::off); },
        100'000, 100'000, 1, "pin_vcd_off for 100 000 results (growth)", false},
       {"vcd_growth_10k",
-       [](const Plan& p) { measure_pin(p, "vcd_growth_10k", false, true); },
+       [](const Plan& p) { measure_pin(p, "vcd_growth_10k", false, Trace::vcd); },
        10'000, 10'000, 1, "pin_vcd_on for 10 000 results (growth of the trace)", false},
       // The yardstick again, last: the machine's load drifts during a run; ratios use
       // the faster of the two pow runs, so a quiet start cannot flatter a model.
@@ -184,6 +187,9 @@ int run_all(bool quick, std::uint64_t seed, const std::string& vcd_stem) {
   }
   if (figures.count("pin_vcd_on_rate") != 0 && figures["pin_vcd_on_rate"] > 0)
     print_figure("vcd_slowdown", figures["pin_vcd_off_rate"] / figures["pin_vcd_on_rate"], "x");
+  if (figures.count("pin_vcd_real_views_rate") != 0 && figures["pin_vcd_real_views_rate"] > 0)
+    print_figure("vcd_real_views_slowdown",
+                 figures["pin_vcd_off_rate"] / figures["pin_vcd_real_views_rate"], "x");
 
   // The targets (docs/performance.md); reported, never a failure: a busy
   // machine slows models and yardstick differently.

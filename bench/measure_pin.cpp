@@ -71,8 +71,9 @@ class PinBench : public sc_core::sc_module {
 
 }  // namespace
 
-void measure_pin(const Plan& plan, const std::string& name, bool stream, bool vcd) {
-  PinBench bench("bench", plan, stream, vcd);
+void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace) {
+  const bool vcd = trace != Trace::off;
+  PinBench bench("bench", plan, stream, trace == Trace::vcd_real_views);
   sc_core::sc_trace_file* file = nullptr;
   if (vcd) {
     file = sc_core::sc_create_vcd_trace_file(plan.vcd_path.c_str());  // appends ".vcd"

@@ -2,7 +2,8 @@
 # Install every dependency of the project from Debian 12 (bookworm) packages.
 #
 #   scripts/setup.sh              build, test, figures and plotting tools
-#   scripts/setup.sh --gtkwave    ... and GTKWave, to open the VCD waveforms
+#   scripts/setup.sh --gtkwave    ... and GTKWave, to open the VCD waveforms (with Xvfb,
+#                                 so the tests can ask GTKWave what it shows; CI uses it)
 #
 # Safe to run again: apt-get skips what is already installed. Uses sudo only when not
 # run as root. Non-interactive (DEBIAN_FRONTEND=noninteractive).
@@ -28,7 +29,9 @@ PACKAGES=(
   gnuplot-nox
   clang-14 libclang-rt-14-dev
 )
-OPTIONAL_GTKWAVE=(gtkwave)
+# gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
+# which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.
+OPTIONAL_GTKWAVE=(gtkwave xvfb xauth)
 
 usage() {
   sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'

@@ -59,8 +59,8 @@ Options parse_options(const std::vector<std::string>& args) {
       o.help = true;
       continue;
     }
-    if (option == "--sweep") {
-      if (has_value) throw UsageError("--sweep takes no value (got '" + value + "')");
+    if (option == "--sweep" || option == "--real-views") {
+      if (has_value) throw UsageError(option + " takes no value (got '" + value + "')");
     } else {
       const auto known = valued_options().find(option);
       if (known == valued_options().end())
@@ -89,6 +89,8 @@ Options parse_options(const std::vector<std::string>& args) {
         o.input_path = value;
       } else if (option == "--sweep") {
         // no value
+      } else if (option == "--real-views") {
+        o.real_views = true;
       } else if (option == "--random") {
         const std::string range = "[1, " + std::to_string(random_count_max) + "]";
         const long long count = parse_integer(value, "N", range);
@@ -153,6 +155,8 @@ Options parse_options(const std::vector<std::string>& args) {
   if (!o.vcd_path.empty() && o.model != Model::pin)
     throw UsageError("--vcd needs --model pin (the " + std::string(to_string(o.model)) +
                      " model has no signals to trace)");
+  if (o.real_views && o.vcd_path.empty())
+    throw UsageError("--real-views needs --vcd FILE (the views exist only in a trace)");
   if (!o.vcd_path.empty() && !o.output_path.empty() && o.vcd_path == o.output_path)
     throw UsageError("--vcd and --output name the same file '" + o.vcd_path + "'");
   return o;
@@ -202,8 +206,12 @@ Output:
   --output FILE             write there instead of standard output (written to a
                             temporary file and renamed when complete)
   --vcd FILE                pin model: write a VCD of every pin and net (time unit 1 ps);
-                            open it with waveforms/specular.gtkw. A sweep's VCD is huge:
-                            trace a point, a file or a short --random run.
+                            open it with waveforms/specular.gtkw, which shows the buses
+                            as real numbers (GTKWave's fixed-point display). A sweep's
+                            VCD is huge: trace a point, a file or a short --random run.
+  --real-views              with --vcd: also trace cos, register 9, K(n), K*A and pins
+                            24-26 as real-valued *_real variables, for viewers that
+                            cannot show a bus as fixed point (about 1.3x the trace time)
   --help                    this text
 
 Fields per computation (csv/json): cos, n, r, g, b, cos_q (register 1 as a real),

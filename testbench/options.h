@@ -33,6 +33,7 @@ struct Options {
   Config config{};                                 ///< --policy, --saturation
   std::uint64_t clock_period_ps = 10000;           ///< --clock-period (10 ns)
   std::string vcd_path;                            ///< --vcd (pin model only)
+  bool real_views = false;                         ///< --real-views (needs --vcd)
   OutputFormat format = OutputFormat::text;        ///< --format
   std::string output_path;                         ///< --output; empty = standard output
 };

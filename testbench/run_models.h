@@ -37,6 +37,7 @@ struct RunSettings {
   Config config{};
   std::uint64_t clock_period_ps = 10000;  ///< pin model: period of pin 28; tlm: of its annotation
   std::string vcd_base;          ///< pin model: VCD file name without ".vcd"; empty = no trace
+  bool real_views = false;       ///< with a trace: add the *_real views (RealView)
   std::size_t chunk_size = 4096;  ///< operations per batch (memory stays flat)
 };
 

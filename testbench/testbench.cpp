@@ -73,6 +73,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   settings.config = o.config;
   settings.clock_period_ps = o.clock_period_ps;
   if (vcd_file) settings.vcd_base = strip_vcd_suffix(vcd_file->temp_path());
+  settings.real_views = o.real_views;
 
   std::ostream& report_stream = output_file ? output_file->stream() : out;
   const std::unique_ptr<Report> report = make_report(o.format, report_stream, err);

@@ -51,9 +51,10 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
   const std::set<std::string> names = figure_names(r.output);
 
   // Every model measured in its own process: results per second and peak memory.
-  for (const char* model : {"pow", "core", "pin_vcd_off", "pin_stream", "pin_vcd_on", "tlm_lt_quantum",
-                            "tlm_lt", "tlm_pin", "tlm_lt_batch", "tlm_pin_batch", "pin_growth_1k",
-                            "pin_growth_10k", "pin_growth_100k", "vcd_growth_10k", "pow_end"}) {
+  for (const char* model : {"pow", "core", "pin_vcd_off", "pin_stream", "pin_vcd_on",
+                            "pin_vcd_real_views", "tlm_lt_quantum", "tlm_lt", "tlm_pin",
+                            "tlm_lt_batch", "tlm_pin_batch", "pin_growth_1k", "pin_growth_10k",
+                            "pin_growth_100k", "vcd_growth_10k", "pow_end"}) {
     EXPECT_EQ(names.count(std::string(model) + "_rate"), 1u) << model;
     EXPECT_EQ(names.count(std::string(model) + "_peak_memory"), 1u) << model;
   }
@@ -61,7 +62,8 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
   for (const char* model : {"core", "pin_vcd_off", "pin_stream", "pin_vcd_on", "tlm_lt_quantum", "tlm_lt",
                             "tlm_pin", "tlm_lt_batch", "tlm_pin_batch"})
     EXPECT_EQ(names.count(std::string(model) + "_vs_pow"), 1u) << model;
-  for (const char* figure : {"pow_yardstick_rate", "vcd_slowdown", "pin_vcd_on_bytes_per_result",
+  for (const char* figure : {"pow_yardstick_rate", "vcd_slowdown", "vcd_real_views_slowdown",
+                             "pin_vcd_on_bytes_per_result", "pin_vcd_real_views_bytes_per_result",
                              "vcd_growth_10k_bytes_per_result", "pin_vcd_off_cycles_per_result",
                              "pin_stream_cycles_per_result", "core_default_formats", "target_core",
                              "target_tlm_lt_quantum", "target_pin_vcd_off", "target_pin_stream",

@@ -123,20 +123,26 @@ TEST(CliExecutable, OutputFileIsWrittenWhole) {
 }
 
 TEST(CliExecutable, VcdNamesScopesAfterThePatent) {
-  const fs::path dir = scratch("vcd");
-  const fs::path vcd = dir / "specular.vcd";
-  const Outcome r = run_tb("--cos 0.9 --n 10 --vcd '" + vcd.string() + "'", dir);
-  EXPECT_EQ(r.status, 0) << r.err;
-  ASSERT_TRUE(fs::exists(vcd)) << r.err;
-  const std::string text = slurp(vcd);
-  for (const char* expected :
-       {"$timescale", "$scope module tb $end", "$scope module dut $end",
-        "$scope module cu16 $end", " q41 ", " q42 ", " select36 ", " write37 ", " pin35_done ",
-        " pin27_start ", " pin28_clk ", " reg9_q ", " reg9_q_real ", " mul39_norm_real ",
-        " pin24_r_real "})
-    EXPECT_NE(text.find(expected), std::string::npos) << expected;
-  EXPECT_EQ(text.find("signal_"), std::string::npos) << "every net has a patent name";
-  EXPECT_EQ(files_in(dir), std::vector<std::string>{"specular.vcd"});
+  for (const bool real_views : {false, true}) {
+    SCOPED_TRACE(real_views ? "--real-views" : "codes only");
+    const fs::path dir = scratch(real_views ? "vcd_real_views" : "vcd");
+    const fs::path vcd = dir / "specular.vcd";
+    const Outcome r = run_tb("--cos 0.9 --n 10 --vcd '" + vcd.string() + "'" +
+                                 (real_views ? " --real-views" : ""),
+                             dir);
+    EXPECT_EQ(r.status, 0) << r.err;
+    ASSERT_TRUE(fs::exists(vcd)) << r.err;
+    const std::string text = slurp(vcd);
+    for (const char* expected :
+         {"$timescale", "$scope module tb $end", "$scope module dut $end",
+          "$scope module cu16 $end", " q41 ", " q42 ", " select36 ", " write37 ", " pin35_done ",
+          " pin27_start ", " pin28_clk ", " reg9_q ", " mul39_norm ", " pin24_r "})
+      EXPECT_NE(text.find(expected), std::string::npos) << expected;
+    for (const char* view : {" reg9_q_real ", " mul39_norm_real ", " pin24_r_real "})
+      EXPECT_EQ(text.find(view) != std::string::npos, real_views) << view;
+    EXPECT_EQ(text.find("signal_"), std::string::npos) << "every net has a patent name";
+    EXPECT_EQ(files_in(dir), std::vector<std::string>{"specular.vcd"});
+  }
 }
 
 namespace {

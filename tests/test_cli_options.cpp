@@ -77,7 +77,9 @@ TEST(CliOptions, SweepInputAndVcd) {
   EXPECT_EQ(o.stimulus, StimulusKind::input);
   EXPECT_EQ(o.input_path, "vectors.csv");
   EXPECT_EQ(o.vcd_path, "x.vcd");
+  EXPECT_FALSE(o.real_views) << "the *_real views are opt-in";
   EXPECT_EQ(o.config.normalisation, Normalisation::none);
+  EXPECT_TRUE(parse({"--sweep", "--vcd", "x.vcd", "--real-views"}).real_views);
 }
 
 TEST(CliOptions, HelpNeedsNothingElse) {
@@ -86,7 +88,7 @@ TEST(CliOptions, HelpNeedsNothingElse) {
   const std::string help = help_text();
   for (const char* option : {"--cos", "--n", "--rgb", "--input", "--sweep", "--random", "--seed",
                              "--model", "--policy", "--saturation", "--clock-period", "--vcd",
-                             "--format", "--output", "--help", "annotated latency"})
+                             "--real-views", "--format", "--output", "--help", "annotated latency"})
     EXPECT_NE(help.find(option), std::string::npos) << option;
 }
 
@@ -175,4 +177,6 @@ TEST(CliOptions, RepeatedOptionsAndConflicts) {
   expect_error({"--sweep", "--model", "core", "--vcd", "x.vcd"}, {"--vcd", "--model pin"});
   expect_error({"--sweep", "--vcd", "a", "--output", "a"}, {"same file", "'a'"});
   expect_error({"--sweep", "--output", ""}, {"--output", "empty"});
+  expect_error({"--sweep", "--real-views"}, {"--real-views", "needs --vcd"});
+  expect_error({"--sweep", "--vcd", "x.vcd", "--real-views=yes"}, {"--real-views", "no value", "'yes'"});
 }

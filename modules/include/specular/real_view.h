@@ -8,8 +8,9 @@
 namespace specular {
 
 /// Follows a code bus and holds its value as a real number in a given format, so a
-/// VCD shows `reg9_real = 0.7071` next to the raw code. Created only when tracing is
-/// on: it costs one process activation per bus change.
+/// VCD shows `reg9_q_real = 0.7071` next to the raw code. Created only on request
+/// (`specular_tb --real-views`): it costs one process activation per bus change and a
+/// `%.16g` per value written, and GTKWave shows the codes as fixed point without it.
 class RealView : public sc_core::sc_module {
  public:
   bus_in code{"code"};

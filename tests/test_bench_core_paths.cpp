@@ -39,6 +39,34 @@ TEST(BenchCorePaths, ConstantPathEqualsRunTimeFormatsPath) {
   }
 }
 
+// The constant path's multipliers skip overflow checks (arith.h): at the ends of every
+// input bus — cos codes up to 2^17 − 1 (≈ 2.0), n up to 1023, intensities 0 and 255 —
+// they give the bits of the checked run-time path, under every policy.
+TEST(BenchCorePaths, BusEndsGiveTheSameBitsOnBothPaths) {
+  for (const Saturation saturation : {Saturation::clamp, Saturation::literal}) {
+    for (const Normalisation policy : {Normalisation::patent, Normalisation::energy, Normalisation::none}) {
+      Config config;
+      config.saturation = saturation;
+      config.normalisation = policy;
+      const Core core(config);
+      ASSERT_TRUE(core.uses_default_formats());
+      for (const code_t c : {0, 1, 2, 32768, 65535, 65536, 65537, 98304, 131071}) {
+        for (const code_t n : {0, 1, 2, 500, 999, 1000, 1001, 1022, 1023}) {
+          for (const code_t i : {0, 1, 128, 254, 255}) {
+            const Operands in{c, n, {i, 255 - i, 255}};
+            const Result fast = core.run(in), generic = core.run_generic(in);
+            EXPECT_EQ(fast.reg9_pass1, generic.reg9_pass1) << c << " " << n << " " << i;
+            EXPECT_EQ(fast.reg9_pass2, generic.reg9_pass2) << c << " " << n << " " << i;
+            EXPECT_EQ(fast.rom38_k, generic.rom38_k) << c << " " << n << " " << i;
+            EXPECT_EQ(fast.norm39, generic.norm39) << c << " " << n << " " << i;
+            EXPECT_EQ(fast.out, generic.out) << c << " " << n << " " << i;
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(BenchCorePaths, OtherWidthsTakeTheRunTimePath) {
   Config config;
   config.widths.reg9_frac_bits = 24;  // not the default: the constants must not apply

@@ -120,5 +120,31 @@ TEST(FormatInputs, CoreOperandsCheckEveryValue) {
   EXPECT_THROW(core.operands(0.5, 20, 1, 1, 300), std::out_of_range);
 }
 
+// Core::run takes codes, not user values: a code off its input bus (which operands()
+// never builds) is refused naming the register, the code and the bus's range, on both
+// paths, rather than computed on a multiplier that assumes it fits (arith.h).
+TEST(FormatInputs, CoreRunRefusesCodesOffTheirBuses) {
+  const Core core;
+  const Operands good = core.operands(0.5, 10, 1, 2, 3);
+  EXPECT_NO_THROW(core.run(good));
+  Operands in = good;
+  in.rgb[0] = 256;
+  EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(in); },
+                                               {"register 10 (R)", "256", "U8.0", "0 to 255"}));
+  in = good;
+  in.rgb[2] = -1;
+  EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(in); }, {"register 12 (B)", "-1"}));
+  in = good;
+  in.n = 1024;
+  EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run_generic(in); },
+                                               {"register 2 (n)", "1024", "0 to 1023"}));
+  in = good;
+  in.cos = std::int64_t{1} << 17;
+  EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(in); },
+                                               {"register 1 (cos)", "131072", "U1.16", "0 to 131071"}));
+  // The largest code of every bus is still on it.
+  EXPECT_NO_THROW(core.run(Operands{(std::int64_t{1} << 17) - 1, 1023, {255, 255, 255}}));
+}
+
 }  // namespace
 }  // namespace specular

@@ -1,5 +1,8 @@
 #include "specular/core.h"
 
+#include <stdexcept>
+#include <string>
+
 namespace specular {
 
 namespace {
@@ -22,9 +25,28 @@ bool is_default(const Formats& f) {
 Core::Core(const Config& config)
     : config_(config),
       formats_(config.widths),
+      cos_bits_(formats_.cos.width()),
+      n_bits_(formats_.n.width()),
+      rgb_bits_(formats_.rgb.width()),
       rom5_(formats_),
       rom38_(formats_, config.normalisation),
       default_formats_(is_default(formats_)) {}
+
+void Core::refuse(const Operands& in) const {
+  const auto check = [](code_t code, const FixedFormat& format, const char* what) {
+    if (code < format.min_code() || code > format.max_code())
+      throw std::out_of_range(std::string("Core::run: ") + what + " code " + std::to_string(code) +
+                              " is outside its bus (" + format.name() + ": codes " +
+                              std::to_string(format.min_code()) + " to " +
+                              std::to_string(format.max_code()) + "); build Operands with Core::operands()");
+  };
+  check(in.cos, formats_.cos, "register 1 (cos)");
+  check(in.n, formats_.n, "register 2 (n)");
+  check(in.rgb[0], formats_.rgb, "register 10 (R)");
+  check(in.rgb[1], formats_.rgb, "register 11 (G)");
+  check(in.rgb[2], formats_.rgb, "register 12 (B)");
+  throw std::logic_error("Core::refuse called with operands on their buses");
+}
 
 Operands Core::operands(double cos_lambda, long long n, long long r, long long g,
                         long long b) const {

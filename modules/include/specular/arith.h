@@ -15,8 +15,9 @@ namespace arith {
 
 // The block functions take their formats as `const FormatSet&`: the run-time Formats
 // (SC_MODULEs, Core with any widths) or Core's DefaultFormats, whose members are
-// compile-time constants, so that every shift and mask folds into an immediate on the
-// core's hot path (docs/performance.md). Same code, same bits either way.
+// compile-time constants (`FormatSet::compile_time`), so that every shift and mask
+// folds into an immediate on the core's hot path and the multipliers skip overflow
+// checks their widths make impossible (docs/performance.md). Same bits either way.
 
 /// Wrap a code to `format`'s width, as a bus of that width would (two's complement).
 /// Two shifts: the bits above the width leave at the top, and shifting back
@@ -52,6 +53,14 @@ inline __int128 round_shift(__int128 value, int shift) {
   return wrap(format, static_cast<code_t>(round_shift(static_cast<__int128>(a) * b, shift)));
 }
 
+/// A rounded value saturated to `format`: in range when only sign bits sit above the
+/// format's magnitude bits, otherwise its minimum or maximum code.
+inline code_t saturate_rounded(const FixedFormat& format, code_t value) {
+  const code_t above = value >> (format.int_bits + format.frac_bits);
+  if (above == 0 || (format.is_signed && above == -1)) return value;
+  return value < 0 ? format.min_code() : format.max_code();
+}
+
 /// a × b with `shift` fraction bits dropped (rounding half up), saturated to `format`:
 /// the tail of multipliers 39 and 13–15. On 64 bits when neither the product nor the
 /// rounding overflows (always, at the default widths: docs/performance.md), otherwise
@@ -59,14 +68,18 @@ inline __int128 round_shift(__int128 value, int shift) {
 inline code_t multiply_round_saturate(const FixedFormat& format, code_t a, code_t b, int shift) {
   code_t product, biased;
   if (shift > 0 && !__builtin_mul_overflow(a, b, &product) &&
-      !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased)) {
-    const code_t value = biased >> shift;
-    // In range when only sign bits sit above the format's magnitude bits.
-    const code_t above = value >> (format.int_bits + format.frac_bits);
-    if (above == 0 || (format.is_signed && above == -1)) return value;
-    return value < 0 ? format.min_code() : format.max_code();
-  }
+      !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased))
+    return saturate_rounded(format, biased >> shift);
   return wide_multiply_round_saturate(format, a, b, shift);
+}
+
+/// The same without overflow checks, for the compile-time formats of Core's hot path:
+/// only where both operands are within formats at most 62 bits wide together, so that
+/// product and rounding bias stay below 2^63 (callers static_assert the widths).
+template <int shift>
+inline code_t multiply_round_saturate_in_range(const FixedFormat& format, code_t a, code_t b) {
+  static_assert(shift > 0, "a multiplier drops fraction bits");
+  return saturate_rounded(format, (a * b + (code_t{1} << (shift - 1))) >> shift);
 }
 
 // ---- Multiplexer 3: ROM 5 address bus -------------------------------------------
@@ -130,12 +143,22 @@ inline code_t mux4(const FormatSet& f, bool select36, code_t reg2, code_t pin19_
 /// log2 × (n or ½), rounded to nearest to adder 8's format and wrapped to its width.
 template <class FormatSet>
 inline code_t mul6(const FormatSet& f, code_t rom5_log2, code_t mux4_operand) {
-  const int shift = f.log2.frac_bits + f.mux4.frac_bits - f.reg9.frac_bits;
-  code_t product, biased;
-  if (shift > 0 && !__builtin_mul_overflow(rom5_log2, mux4_operand, &product) &&
-      !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased))
-    return wrap(f.reg9, biased >> shift);  // 64 bits suffice (the default widths)
-  return wide_multiply_round_wrap(f.reg9, rom5_log2, mux4_operand, shift);
+  if constexpr (FormatSet::compile_time) {
+    // A wrapping multiplier keeps bits shift .. shift + width − 1 of product + bias, and
+    // those are the same in the product modulo 2^64 as in the exact one: no overflow
+    // check, for any operands (unsigned arithmetic: wrapping is defined).
+    constexpr int shift = FormatSet::log2.frac_bits + FormatSet::mux4.frac_bits - FormatSet::reg9.frac_bits;
+    static_assert(shift > 0 && shift + FormatSet::reg9.width() <= 64, "kept bits within 64");
+    const std::uint64_t product = static_cast<std::uint64_t>(rom5_log2) * static_cast<std::uint64_t>(mux4_operand);
+    return wrap(f.reg9, static_cast<code_t>((product + (std::uint64_t{1} << (shift - 1))) >> shift));
+  } else {
+    const int shift = f.log2.frac_bits + f.mux4.frac_bits - f.reg9.frac_bits;
+    code_t product, biased;
+    if (shift > 0 && !__builtin_mul_overflow(rom5_log2, mux4_operand, &product) &&
+        !__builtin_add_overflow(product, code_t{1} << (shift - 1), &biased))
+      return wrap(f.reg9, biased >> shift);  // 64 bits suffice (the default widths)
+    return wide_multiply_round_wrap(f.reg9, rom5_log2, mux4_operand, shift);
+  }
 }
 
 // ---- Inverter block 7 ----------------------------------------------------------
@@ -171,14 +194,29 @@ class Rom38Table {
 /// two passes register 9 holds up to ~16 000; that garbage saturates silently).
 template <class FormatSet>
 inline code_t mul39(const FormatSet& f, code_t reg9, code_t rom38_k) {
-  const int shift = f.reg9.frac_bits + f.rom38.frac_bits - f.norm.frac_bits;
-  return multiply_round_saturate(f.norm, reg9, rom38_k, shift);
+  if constexpr (FormatSet::compile_time) {
+    // Both operands come from inside the device, within their formats (adder 8 wraps
+    // register 9's input to S14.22; ROM 38 holds U8.16 words): no overflow check.
+    static_assert(FormatSet::reg9.width() + FormatSet::rom38.width() <= 62, "product fits");
+    return multiply_round_saturate_in_range<FormatSet::reg9.frac_bits + FormatSet::rom38.frac_bits -
+                                            FormatSet::norm.frac_bits>(f.norm, reg9, rom38_k);
+  } else {
+    const int shift = f.reg9.frac_bits + f.rom38.frac_bits - f.norm.frac_bits;
+    return multiply_round_saturate(f.norm, reg9, rom38_k, shift);
+  }
 }
 
 // ---- Multipliers 13, 14, 15 ----------------------------------------------------
 /// K·A × intensity (register 10, 11 or 12), rounded and saturated to the pin format.
 template <class FormatSet>
 inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
+  if constexpr (FormatSet::compile_time) {
+    // Multiplier 39 saturates K·A to its format, and Core::run, the only caller with
+    // compile-time formats, refuses an intensity outside U8: no overflow check.
+    static_assert(FormatSet::norm.width() + FormatSet::rgb.width() <= 62, "product fits");
+    return multiply_round_saturate_in_range<FormatSet::norm.frac_bits - FormatSet::out.frac_bits>(
+          f.out, norm39, intensity);
+  }
   return multiply_round_saturate(f.out, norm39, intensity, f.norm.frac_bits - f.out.frac_bits);
 }
 

@@ -41,6 +41,7 @@ struct Result {
 /// so shifts, masks and rounding constants are immediates (docs/performance.md: about
 /// 2x on the core); other widths run the same functions on the run-time Formats.
 struct DefaultFormats {
+  static constexpr bool compile_time = true;
   static constexpr Widths widths{};
   static constexpr FixedFormat cos{false, 1, 16};
   static constexpr FixedFormat n{false, 10, 0};
@@ -61,7 +62,11 @@ class Core {
 
   /// One operation: pass 1 (select 36 = 0), pass 2 (select 36 = 1), then the
   /// combinational tail (ROM 38, multiplier 39, multipliers 13–15).
+  /// Throws std::out_of_range, naming the operand and its range, for a code outside
+  /// its input bus (register 1, 2 or 10–12) — possible only for Operands built by
+  /// hand rather than by operands(): the multipliers' fast path relies on it.
   Result run(const Operands& in) const {
+    if (!on_input_buses(in)) refuse(in);
     return default_formats_ ? run_with(DefaultFormats{}, in) : run_with(formats_, in);
   }
 
@@ -69,7 +74,10 @@ class Core {
   bool uses_default_formats() const { return default_formats_; }
   /// run() on the run-time Formats even where the constant path applies: the test
   /// that proves both paths give the same bits calls it (tests/test_bench_core_paths.cpp).
-  Result run_generic(const Operands& in) const { return run_with(formats_, in); }
+  Result run_generic(const Operands& in) const {
+    if (!on_input_buses(in)) refuse(in);
+    return run_with(formats_, in);
+  }
 
   /// Operands from user values: checks ranges (throws std::out_of_range naming the
   /// value and its allowed range) and quantises cos λ to register 1's format.
@@ -103,8 +111,19 @@ class Core {
     return arith::adder8(f, config_.saturation, f.one_code(), arith::inv7(f, product), true);
   }
 
+  /// Every operand within its bus's format. The input buses are unsigned and their
+  /// largest codes are all ones, so a code fits when nothing is left above its width
+  /// (a negative code has bits up to 63): one test for all five, off the hot path's way.
+  bool on_input_buses(const Operands& in) const {
+    const auto u = [](code_t code) { return static_cast<std::uint64_t>(code); };
+    return ((u(in.cos) >> cos_bits_) | (u(in.n) >> n_bits_) |
+            ((u(in.rgb[0]) | u(in.rgb[1]) | u(in.rgb[2])) >> rgb_bits_)) == 0;
+  }
+  [[noreturn, gnu::cold, gnu::noinline]] void refuse(const Operands& in) const;
+
   Config config_;
   Formats formats_;
+  int cos_bits_, n_bits_, rgb_bits_;  ///< widths of registers 1, 2 and 10–12
   arith::Rom5Table rom5_;
   arith::Rom38Table rom38_;
   bool default_formats_;

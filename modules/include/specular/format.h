@@ -76,6 +76,8 @@ struct Widths {
 /// Bus formats derived from Widths; computed once, read everywhere.
 struct Formats {
   explicit Formats(const Widths& widths = Widths{});
+  /// Run-time values (Core's DefaultFormats are the compile-time set: arith.h).
+  static constexpr bool compile_time = false;
 
   Widths widths;
   FixedFormat cos;     ///< pin 17, register 1 (U1.16)

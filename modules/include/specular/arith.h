@@ -215,9 +215,10 @@ inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
     // compile-time formats, refuses an intensity outside U8: no overflow check.
     static_assert(FormatSet::norm.width() + FormatSet::rgb.width() <= 62, "product fits");
     return multiply_round_saturate_in_range<FormatSet::norm.frac_bits - FormatSet::out.frac_bits>(
-          f.out, norm39, intensity);
+        f.out, norm39, intensity);
+  } else {
+    return multiply_round_saturate(f.out, norm39, intensity, f.norm.frac_bits - f.out.frac_bits);
   }
-  return multiply_round_saturate(f.out, norm39, intensity, f.norm.frac_bits - f.out.frac_bits);
 }
 
 }  // namespace arith

@@ -1,0 +1,248 @@
+// A harness around a pin-level device: clock, pin signals, wired constants, and a
+// bus-functional driver that runs operations with the spec's protocol.
+//
+// Generic over the device it drives: the SystemC netlist (SpecularDevice, aliased
+// PinHarness in pin_harness.h) or the verilated RTL twin behind its port adapter
+// (twin/: RtlHarness). A Device provides pins 17–35 as bus_in/bus_out/wire_in/wire_out
+// ports, the nets the monitor samples (select36, reg1_q, reg9_q, rom38_k, mul39_norm),
+// formats(), constant_half19(), constant_one20(), trace(file), and a constructor
+// (name, Config, bool real_views).
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "specular/core.h"
+#include "specular/real_view.h"
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// Owns the device, its clock (pin 28) and every pin signal, ties pins 19,
+/// 20, 34 to their constants, and drives operations exactly as spec §3 "protocol" allows:
+///   - pin 17 and, when they change, registers 2 and 10–12 (strobes 30–33) are set a
+///     quarter period before the start edge; strobes fall at the start edge;
+///   - start (27) rises with a rising clock edge and falls half a period later;
+///   - results are read at the rising edge of 35 (start + 2.5 T);
+///   - starts come every 2 T while n, R, G, B are unchanged (only cos λ streams),
+///     every 3 T when they change (they may be reloaded only after 35 rises).
+/// The run functions block: call them from an SC_THREAD.
+template <class Device>
+class DeviceHarness : public sc_core::sc_module {
+ public:
+  DeviceHarness(sc_core::sc_module_name name, const Config& config,
+                const sc_core::sc_time& clock_period, bool real_views = false);
+
+  /// Pulse reset (pin 29) low for one clock period; the control unit returns to idle.
+  void reset();
+  /// One operation; returns what registers 1, 9, ROM 38, multiplier 39 and pins 24–26
+  /// held, as the monitor sampled them.
+  Result run(const Operands& in);
+  /// Many operations, pipelined as the protocol allows. `out` is resized to match.
+  void run_batch(const std::vector<Operands>& in, std::vector<Result>& out);
+  /// Clock periods from the start edge to the rising edge of 35, per operation of the
+  /// last batch (2.5 by the spec's timing table).
+  const std::vector<double>& cycles() const { return cycles_; }
+
+  /// Trace pins (under this harness's name) and the device's internals.
+  void trace(sc_core::sc_trace_file* file) const;
+
+  const sc_core::sc_time& clock_period() const { return period_; }
+
+ private:
+  void on_select36();  // pass 1 is in register 9 while select 36 rises
+  void on_done35();    // results are valid at the rising edge of 35
+  void wait_until(const sc_core::sc_time& when);
+
+  sc_core::sc_time period_;
+
+ public:
+  sc_core::sc_clock pin28_clk;
+  bus_signal pin17_cos{"pin17_cos"};
+  bus_signal pin18_n{"pin18_n"};
+  bus_signal pin19_half{"pin19_half"};
+  bus_signal pin20_one{"pin20_one"};
+  bus_signal pin21_r{"pin21_r"};
+  bus_signal pin22_g{"pin22_g"};
+  bus_signal pin23_b{"pin23_b"};
+  bus_signal pin24_r{"pin24_r"};
+  bus_signal pin25_g{"pin25_g"};
+  bus_signal pin26_b{"pin26_b"};
+  wire pin27_start{"pin27_start"};
+  wire pin29_reset_n{"pin29_reset_n", true};
+  wire pin30_load_n{"pin30_load_n"};
+  wire pin31_load_r{"pin31_load_r"};
+  wire pin32_load_g{"pin32_load_g"};
+  wire pin33_load_b{"pin33_load_b"};
+  wire pin34_carry{"pin34_carry", true};
+  wire pin35_done{"pin35_done", true};
+  Device dut;
+
+ private:
+  // Monitor state for the batch in flight.
+  std::vector<Result>* batch_out_ = nullptr;
+  std::vector<sc_core::sc_time> start_times_;
+  std::vector<double> cycles_;
+  std::size_t pass1_seen_ = 0;
+  std::size_t done_seen_ = 0;
+  std::size_t started_ = 0;
+  sc_core::sc_event result_event_;
+  bool loaded_ = false;
+  Operands loaded_operands_;
+};
+
+// ---- implementation (a template: instantiated once per device, see pin_harness.cpp) ----
+
+template <class Device>
+DeviceHarness<Device>::DeviceHarness(sc_core::sc_module_name name, const Config& config,
+                                     const sc_core::sc_time& clock_period, bool real_views)
+    : sc_module(name),
+      period_(clock_period),
+      pin28_clk("pin28_clk", clock_period, 0.5, sc_core::SC_ZERO_TIME, true),
+      dut("dut", config, real_views) {
+  SPECULAR_HAS_PROCESS(DeviceHarness);
+  dut.pin17_cos(pin17_cos);
+  dut.pin18_n(pin18_n);
+  dut.pin19_half(pin19_half);
+  dut.pin20_one(pin20_one);
+  dut.pin21_r(pin21_r);
+  dut.pin22_g(pin22_g);
+  dut.pin23_b(pin23_b);
+  dut.pin24_r(pin24_r);
+  dut.pin25_g(pin25_g);
+  dut.pin26_b(pin26_b);
+  dut.pin27_start(pin27_start);
+  dut.pin28_clk(pin28_clk);
+  dut.pin29_reset_n(pin29_reset_n);
+  dut.pin30_load_n(pin30_load_n);
+  dut.pin31_load_r(pin31_load_r);
+  dut.pin32_load_g(pin32_load_g);
+  dut.pin33_load_b(pin33_load_b);
+  dut.pin34_carry(pin34_carry);
+  dut.pin35_done(pin35_done);
+  // Pins 19 and 20 are wired constants (spec §2 Decisions): ½ and 1.0.
+  pin19_half.write(dut.constant_half19());
+  pin20_one.write(dut.constant_one20());
+
+  SC_METHOD(on_select36);
+  sensitive << dut.select36.posedge_event();
+  dont_initialize();
+  SC_METHOD(on_done35);
+  sensitive << pin35_done.posedge_event();
+  dont_initialize();
+}
+
+template <class Device>
+void DeviceHarness<Device>::wait_until(const sc_core::sc_time& when) {
+  const sc_core::sc_time now = sc_core::sc_time_stamp();
+  if (when > now) wait(when - now);
+}
+
+template <class Device>
+void DeviceHarness<Device>::reset() {
+  // Release a quarter period after an edge: never on an edge (no race with the clock).
+  pin29_reset_n.write(false);
+  wait(period_);
+  pin29_reset_n.write(true);
+  loaded_ = false;
+}
+
+template <class Device>
+void DeviceHarness<Device>::on_select36() {
+  if (batch_out_ == nullptr || pass1_seen_ >= started_) return;
+  Result& r = (*batch_out_)[pass1_seen_++];
+  r.reg1 = dut.reg1_q.read();
+  r.reg9_pass1 = dut.reg9_q.read();
+}
+
+template <class Device>
+void DeviceHarness<Device>::on_done35() {
+  if (batch_out_ == nullptr || done_seen_ >= started_) return;
+  Result& r = (*batch_out_)[done_seen_];
+  r.reg9_pass2 = dut.reg9_q.read();
+  r.rom38_k = dut.rom38_k.read();
+  r.norm39 = dut.mul39_norm.read();
+  r.out = {pin24_r.read(), pin25_g.read(), pin26_b.read()};
+  cycles_[done_seen_] = (sc_core::sc_time_stamp() - start_times_[done_seen_]) / period_;
+  ++done_seen_;
+  result_event_.notify(sc_core::SC_ZERO_TIME);
+}
+
+template <class Device>
+Result DeviceHarness<Device>::run(const Operands& in) {
+  std::vector<Result> out;
+  run_batch({in}, out);
+  return out.front();
+}
+
+template <class Device>
+void DeviceHarness<Device>::run_batch(const std::vector<Operands>& in, std::vector<Result>& out) {
+  using sc_core::sc_time;
+  const std::size_t count = in.size();
+  out.assign(count, Result{});
+  start_times_.assign(count, sc_time());
+  cycles_.assign(count, 0.0);
+  batch_out_ = &out;
+  pass1_seen_ = done_seen_ = started_ = 0;
+
+  const sc_time quarter = period_ / 4;
+  // The first start edge: the next rising edge at least a quarter period from now.
+  const sc_time now = sc_core::sc_time_stamp();
+  sc_time start = period_ * std::ceil((now + quarter) / period_);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Operands& op = in[i];
+    const bool reload = !loaded_ || op.n != loaded_operands_.n || op.rgb != loaded_operands_.rgb;
+    if (i > 0) {
+      const sc_time earliest = start_times_[i - 1] + period_ * (reload ? 3 : 2);
+      if (start < earliest) start = earliest;
+    }
+    wait_until(start - quarter);
+    pin17_cos.write(op.cos);
+    if (reload) {
+      pin18_n.write(op.n);
+      pin21_r.write(op.rgb[0]);
+      pin22_g.write(op.rgb[1]);
+      pin23_b.write(op.rgb[2]);
+      pin30_load_n.write(true);
+      pin31_load_r.write(true);
+      pin32_load_g.write(true);
+      pin33_load_b.write(true);
+      loaded_operands_ = op;
+      loaded_ = true;
+    }
+    wait_until(start);
+    pin30_load_n.write(false);
+    pin31_load_r.write(false);
+    pin32_load_g.write(false);
+    pin33_load_b.write(false);
+    pin27_start.write(true);
+    start_times_[i] = start;
+    ++started_;
+    wait(period_ / 2);
+    pin27_start.write(false);
+  }
+  while (done_seen_ < count) wait(result_event_);
+  batch_out_ = nullptr;
+}
+
+template <class Device>
+void DeviceHarness<Device>::trace(sc_core::sc_trace_file* file) const {
+  const std::string scope = std::string(name()) + ".";
+  const Formats& f = dut.formats();
+  const std::pair<const bus_signal*, const FixedFormat*> buses[] = {
+      {&pin17_cos, &f.cos}, {&pin18_n, &f.n},   {&pin19_half, &f.mux4}, {&pin20_one, &f.reg9},
+      {&pin21_r, &f.rgb},   {&pin22_g, &f.rgb}, {&pin23_b, &f.rgb},     {&pin24_r, &f.out},
+      {&pin25_g, &f.out},   {&pin26_b, &f.out}};
+  for (const auto& [bus, format] : buses)
+    trace_bus(file, *bus, *format, scope + bus->basename());
+  for (const wire* w : {&pin27_start, &pin29_reset_n, &pin30_load_n, &pin31_load_r,
+                        &pin32_load_g, &pin33_load_b, &pin34_carry, &pin35_done})
+    sc_core::sc_trace(file, *w, scope + w->basename());
+  sc_core::sc_trace(file, pin28_clk, scope + "pin28_clk");
+  dut.trace(file);
+}
+
+}  // namespace specular

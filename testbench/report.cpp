@@ -63,7 +63,7 @@ std::string header_line(const RunDescription& run) {
   std::ostringstream s;
   s << "model " << run.model << ", normalisation " << to_string(run.config.normalisation)
     << ", saturation " << to_string(run.config.saturation);
-  if (run.model == "pin") s << ", clock " << clock_text(run.clock_period_ps);
+  if (run.model == "pin" || run.model == "rtl") s << ", clock " << clock_text(run.clock_period_ps);
   s << ", " << run.operations << " computation(s) from " << run.stimulus;
   return s.str();
 }

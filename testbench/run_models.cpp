@@ -3,10 +3,14 @@
 #include <exception>
 #include <iostream>
 #include <memory>
+#include <type_traits>
 
 #include <tlm_utils/simple_initiator_socket.h>
 
 #include "specular/pin_harness.h"
+#ifdef SPECULAR_HAS_RTL_TWIN
+#include "specular/twin/rtl_device.h"
+#endif
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "usage_error.h"
@@ -19,16 +23,18 @@ const char* to_string(Model model) {
     case Model::pin: return "pin";
     case Model::core: return "core";
     case Model::tlm: return "tlm";
+    case Model::rtl: return "rtl";
   }
   return "?";
 }
 
-std::string model_names() { return "pin, core, tlm"; }
+std::string model_names() { return "pin, core, tlm, rtl"; }
 
 Model parse_model(const std::string& text) {
   if (text == "pin") return Model::pin;
   if (text == "core") return Model::core;
   if (text == "tlm") return Model::tlm;
+  if (text == "rtl") return Model::rtl;
   throw UsageError("--model = '" + text + "' is not one of: " + model_names());
 }
 
@@ -44,11 +50,13 @@ void kernel_reports_to_stderr(const sc_core::sc_report& report, const sc_core::s
   sc_core::sc_report_handler::default_handler(report, actions & ~sc_core::SC_DISPLAY);
 }
 
-/// The bus-functional side of the pin model: an SC_THREAD that resets the device,
-/// then feeds it batch after batch through the harness and stops the kernel.
+/// The bus-functional side of the pin model and the RTL twin: an SC_THREAD that
+/// resets the device, then feeds it batch after batch through the harness and stops
+/// the kernel.
+template <class Harness>
 class PinDriver : public sc_core::sc_module {
  public:
-  PinDriver(sc_core::sc_module_name name, PinHarness& harness, const OperandSource& source,
+  PinDriver(sc_core::sc_module_name name, Harness& harness, const OperandSource& source,
             const ResultSink& sink, std::size_t chunk_size)
       : sc_module(name), harness_(harness), source_(source), sink_(sink), chunk_size_(chunk_size) {
     SPECULAR_HAS_PROCESS(PinDriver);
@@ -76,21 +84,33 @@ class PinDriver : public sc_core::sc_module {
     sc_core::sc_stop();
   }
 
-  PinHarness& harness_;
+  Harness& harness_;
   const OperandSource& source_;
   const ResultSink& sink_;
   std::size_t chunk_size_;
 };
 
-void run_pin_model(const RunSettings& settings, const OperandSource& source,
-                   const ResultSink& sink) {
+/// Both pin-level models: the SystemC netlist (PinHarness) and the RTL twin
+/// (RtlHarness), under the same harness, driver and trace settings.
+template <class Harness>
+void run_on_pins(const RunSettings& settings, const OperandSource& source,
+                 const ResultSink& sink) {
   sc_core::sc_report_handler::set_handler(kernel_reports_to_stderr);
   const bool tracing = !settings.vcd_base.empty();
   const sc_core::sc_time period(static_cast<double>(settings.clock_period_ps), sc_core::SC_PS);
   // Real-valued views cost a process activation per bus change, and GTKWave shows the
   // code buses as fixed point anyway (waveforms/specular.gtkw): only when asked for.
-  PinHarness harness("tb", settings.config, period, tracing && settings.real_views);
-  PinDriver driver("driver", harness, source, sink, settings.chunk_size);
+  Harness harness("tb", settings.config, period, tracing && settings.real_views);
+  PinDriver<Harness> driver("driver", harness, source, sink, settings.chunk_size);
+#ifdef SPECULAR_HAS_RTL_TWIN
+  // The twin's waveform is Verilator's own, of the RTL's nets (waveforms/specular_rtl.gtkw).
+  if constexpr (std::is_same_v<Harness, RtlHarness>) {
+    if (tracing) harness.dut.open_vcd(settings.vcd_base + ".vcd");
+    sc_core::sc_start();
+    if (driver.failure) std::rethrow_exception(driver.failure);
+    return;
+  }
+#endif
 
   sc_core::sc_trace_file* vcd = nullptr;
   if (tracing) {
@@ -190,7 +210,14 @@ void run_tlm_model(const RunSettings& settings, const OperandSource& source,
 void run_operations(const RunSettings& settings, const OperandSource& source,
                     const ResultSink& sink) {
   switch (settings.model) {
-    case Model::pin: return run_pin_model(settings, source, sink);
+    case Model::pin: return run_on_pins<PinHarness>(settings, source, sink);
+    case Model::rtl:
+#ifdef SPECULAR_HAS_RTL_TWIN
+      return run_on_pins<RtlHarness>(settings, source, sink);
+#else
+      throw UsageError("--model rtl: this specular_tb was built without the RTL twin "
+                       "(configured with -DSPECULAR_BUILD_RTL=OFF)");
+#endif
     case Model::core: return run_core_model(settings, source, sink);
     case Model::tlm: return run_tlm_model(settings, source, sink);
   }

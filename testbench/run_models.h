@@ -19,12 +19,13 @@ enum class Model {
   pin,   ///< the pin-level SystemC netlist, driven through PinHarness (default)
   core,  ///< the kernel-free bit-accurate core; latency annotated from the spec
   tlm,   ///< the TLM-2.0 `lt` target through its registers; cycles = its annotation
+  rtl,   ///< the verilated RTL twin (rtl/, twin/) driven through the same harness as `pin`
 };
 
 const char* to_string(Model model);
-/// "pin", "core" or "tlm"; throws UsageError naming the value and the choices.
+/// "pin", "core", "tlm" or "rtl"; throws UsageError naming the value and the choices.
 Model parse_model(const std::string& text);
-/// "pin, core, tlm": the choices, for messages and --help.
+/// "pin, core, tlm, rtl": the choices, for messages and --help.
 std::string model_names();
 
 /// The spec's timing table: start → rising edge of 35 in clock periods. The core
@@ -35,8 +36,8 @@ constexpr double spec_latency_cycles = 2.5;
 struct RunSettings {
   Model model = Model::pin;
   Config config{};
-  std::uint64_t clock_period_ps = 10000;  ///< pin model: period of pin 28; tlm: of its annotation
-  std::string vcd_base;          ///< pin model: VCD file name without ".vcd"; empty = no trace
+  std::uint64_t clock_period_ps = 10000;  ///< pin, rtl: period of pin 28; tlm: of its annotation
+  std::string vcd_base;          ///< pin, rtl: VCD file name without ".vcd"; empty = no trace
   bool real_views = false;       ///< with a trace: add the *_real views (RealView)
   std::size_t chunk_size = 4096;  ///< operations per batch (memory stays flat)
 };

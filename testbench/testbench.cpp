@@ -94,7 +94,8 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
       // The pin model stops the kernel at the last rising edge of 35, before SystemC
       // writes that instant to the VCD: one more clock period (this runs in the pin
       // driver's thread) puts the last result's 35↑ into the waveform.
-      if (settings.model == Model::pin && !settings.vcd_base.empty())
+      if ((settings.model == Model::pin || settings.model == Model::rtl) &&
+          !settings.vcd_base.empty())
         sc_core::wait(sc_core::sc_time(static_cast<double>(o.clock_period_ps), sc_core::SC_PS));
       return false;
     }

@@ -1,0 +1,258 @@
+// specular_romgen: the ROM images of the RTL twin, written once from the C++ tables.
+//
+// ROM 5 and ROM 38 of rtl/ read `$readmemh` images. They come from the same tables the
+// core and the SystemC model use (arith::Rom5Table, arith::Rom38Table), at build time,
+// for the widths given: never hand-copied, never committed. The same tool checks a dump
+// the RTL wrote while reading its ROMs through their ports (rtl/tb/rom_read_tb.v), so a
+// test proves every word the RTL reads equals the table's.
+//
+//   specular_romgen --out-dir DIR [--bank-bits B] [--width NAME=VALUE]...
+//       writes DIR/rom5.hex (2^rom5_addr_bits words) and DIR/rom38.hex (2^B banks of
+//       2^n_bits words; bank b = Normalisation value b, unused banks zero)
+//   specular_romgen --check DUMP [--bank-bits B] [--width NAME=VALUE]...
+//       compares every "rom5 BUS LOG2" and "rom38 BANK N K" line (hex) of DUMP with the
+//       tables; exit 1 on the first difference or when an address was never read
+// Exit status: 0 done, 1 a difference (--check), 2 bad option or file.
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "specular/arith.h"
+#include "specular/format.h"
+
+namespace {
+
+using specular::code_t;
+using specular::Formats;
+using specular::Normalisation;
+using specular::Widths;
+
+/// ROM 38's banks, in bank order: bank b holds the policy whose enum value is b (the
+/// RTL's cfg_rom38_bank input). A new normalisation is one more entry here.
+const Normalisation kRom38Banks[] = {Normalisation::patent, Normalisation::energy,
+                                     Normalisation::none};
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct WidthField {
+  const char* name;
+  int Widths::*member;
+};
+const WidthField kWidthFields[] = {
+    {"cos_frac_bits", &Widths::cos_frac_bits},     {"n_bits", &Widths::n_bits},
+    {"rgb_bits", &Widths::rgb_bits},               {"rom5_addr_bits", &Widths::rom5_addr_bits},
+    {"rom5_word_bits", &Widths::rom5_word_bits},   {"reg9_int_bits", &Widths::reg9_int_bits},
+    {"reg9_frac_bits", &Widths::reg9_frac_bits},   {"rom38_int_bits", &Widths::rom38_int_bits},
+    {"rom38_frac_bits", &Widths::rom38_frac_bits}, {"norm_int_bits", &Widths::norm_int_bits},
+    {"norm_frac_bits", &Widths::norm_frac_bits},   {"out_int_bits", &Widths::out_int_bits},
+    {"out_frac_bits", &Widths::out_frac_bits}};
+
+int parse_int(const std::string& what, const std::string& text) {
+  std::size_t used = 0;
+  int value = 0;
+  try {
+    value = std::stoi(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size())
+    throw UsageError(what + " = '" + text + "' is not an integer");
+  return value;
+}
+
+void set_width(Widths& widths, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  const std::string name = assignment.substr(0, eq);
+  std::string names;
+  for (const WidthField& field : kWidthFields) {
+    if (name == field.name) {
+      if (eq == std::string::npos) throw UsageError("--width " + assignment + ": expected NAME=VALUE");
+      widths.*field.member = parse_int("--width " + name, assignment.substr(eq + 1));
+      return;
+    }
+    names += names.empty() ? field.name : std::string(", ") + field.name;
+  }
+  throw UsageError("--width: '" + name + "' is not one of: " + names);
+}
+
+struct Options {
+  Widths widths;
+  int bank_bits = 2;
+  std::string out_dir;
+  std::string check_path;
+};
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(arg + " needs a value");
+      return argv[++i];
+    };
+    if (arg == "--out-dir") o.out_dir = value();
+    else if (arg == "--check") o.check_path = value();
+    else if (arg == "--bank-bits") o.bank_bits = parse_int("--bank-bits", value());
+    else if (arg == "--width") set_width(o.widths, value());
+    else throw UsageError("unknown option '" + arg + "' (expected --out-dir, --check, --bank-bits, --width)");
+  }
+  if (o.out_dir.empty() == o.check_path.empty())
+    throw UsageError("give exactly one of --out-dir DIR or --check DUMP");
+  const int banks = static_cast<int>(std::size(kRom38Banks));
+  if (o.bank_bits < 1 || o.bank_bits > 8 || (1 << o.bank_bits) < banks)
+    throw UsageError("--bank-bits = " + std::to_string(o.bank_bits) + " is outside the allowed range [" +
+                     std::to_string(banks <= 2 ? 1 : (banks <= 4 ? 2 : 3)) + ", 8] (" +
+                     std::to_string(banks) + " normalisation banks)");
+  try {
+    o.widths.validate();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  return o;
+}
+
+/// One word per line, as many hex digits as the width needs.
+void write_image(const std::string& path, const std::string& comment, int width,
+                 const std::vector<std::uint64_t>& words) {
+  std::ofstream out(path);
+  if (!out) throw UsageError("cannot write '" + path + "'");
+  out << "// " << comment << " (written by specular_romgen; do not edit)\n";
+  const int digits = (width + 3) / 4;
+  char line[32];
+  for (std::uint64_t word : words) {
+    std::snprintf(line, sizeof line, "%0*llx\n", digits, static_cast<unsigned long long>(word));
+    out << line;
+  }
+  if (!out.flush()) throw UsageError("cannot write '" + path + "'");
+}
+
+void write_images(const Options& o) {
+  const Formats f(o.widths);
+  const specular::arith::Rom5Table rom5(f);
+  std::vector<std::uint64_t> words(rom5.words().begin(), rom5.words().end());
+  write_image(o.out_dir + "/rom5.hex",
+              "ROM 5 mantissa table: " + std::to_string(words.size()) + " words x " +
+                  std::to_string(o.widths.rom5_word_bits) + " bits",
+              o.widths.rom5_word_bits, words);
+
+  const std::size_t bank_words = static_cast<std::size_t>(f.rom38_words());
+  words.assign(bank_words << o.bank_bits, 0);
+  std::string banks;
+  for (std::size_t b = 0; b < std::size(kRom38Banks); ++b) {
+    const Normalisation policy = kRom38Banks[b];
+    if (static_cast<std::size_t>(policy) != b) throw std::logic_error("ROM 38 bank order != enum order");
+    const specular::arith::Rom38Table table(f, policy);
+    for (std::size_t n = 0; n < bank_words; ++n)
+      words[b * bank_words + n] = static_cast<std::uint64_t>(table.words()[n]);
+    banks += std::string(b ? ", " : "") + std::to_string(b) + " " + specular::to_string(policy);
+  }
+  write_image(o.out_dir + "/rom38.hex",
+              "ROM 38 K(n): " + std::to_string(1 << o.bank_bits) + " banks (" + banks +
+                  ", others zero) x " + std::to_string(bank_words) + " words x " +
+                  f.rom38.name(),
+              f.rom38.width(), words);
+}
+
+std::uint64_t parse_hex(const std::string& text, const std::string& where) {
+  std::size_t used = 0;
+  std::uint64_t value = 0;
+  try {
+    value = std::stoull(text, &used, 16);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) throw UsageError(where + ": '" + text + "' is not hex");
+  return value;
+}
+
+/// A code read back as `width` bits, sign-extended when the bus is signed.
+code_t as_code(std::uint64_t bits, const specular::FixedFormat& format) {
+  return specular::arith::wrap(format, static_cast<code_t>(bits));
+}
+
+int check_dump(const Options& o) {
+  const Formats f(o.widths);
+  const specular::arith::Rom5Table rom5(f);
+  std::vector<specular::arith::Rom38Table> rom38;
+  for (Normalisation policy : kRom38Banks) rom38.emplace_back(f, policy);
+  const std::size_t bank_words = static_cast<std::size_t>(f.rom38_words());
+  const std::size_t rom38_total = bank_words << o.bank_bits;
+
+  std::ifstream in(o.check_path);
+  if (!in) throw UsageError("--check: cannot read '" + o.check_path + "'");
+  // Which mantissa words and ROM 38 words the dump proved, by address.
+  std::vector<bool> rom5_seen(rom5.words().size(), false), rom38_seen(rom38_total, false);
+  long lines = 0;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string kind, a, b, c;
+    if (!(fields >> kind)) continue;
+    const std::string where = o.check_path + ":" + std::to_string(lines + 1);
+    ++lines;
+    if (kind == "rom5" && fields >> a >> b) {
+      const code_t bus = as_code(parse_hex(a, where), f.reg9);
+      const code_t got = as_code(parse_hex(b, where), f.log2);
+      const code_t want = rom5.log2(bus);
+      if (got != want) {
+        std::cerr << where << ": ROM 5 at bus " << bus << " gave " << got << ", the table " << want << '\n';
+        return 1;
+      }
+      if (bus > 0) {  // the word this bus addresses (as the table's lookup finds it)
+        const int msb = 63 - __builtin_clzll(static_cast<std::uint64_t>(bus));
+        const std::uint64_t aligned = (static_cast<std::uint64_t>(bus) << (63 - msb)) << 1;
+        rom5_seen[aligned >> (64 - o.widths.rom5_addr_bits)] = true;
+      }
+    } else if (kind == "rom38" && fields >> a >> b >> c) {
+      const std::size_t bank = parse_hex(a, where), n = parse_hex(b, where);
+      const code_t got = as_code(parse_hex(c, where), f.rom38);
+      if (bank >= (std::size_t{1} << o.bank_bits) || n >= bank_words)
+        throw UsageError(where + ": ROM 38 address out of range");
+      const code_t want = bank < rom38.size() ? rom38[bank].k(static_cast<code_t>(n)) : 0;
+      if (got != want) {
+        std::cerr << where << ": ROM 38 bank " << bank << " n " << n << " gave " << got
+                  << ", the table " << want << '\n';
+        return 1;
+      }
+      rom38_seen[bank * bank_words + n] = true;
+    } else {
+      throw UsageError(where + ": expected 'rom5 BUS LOG2' or 'rom38 BANK N K', got '" + line + "'");
+    }
+  }
+  std::size_t rom5_read = 0, rom38_read = 0;
+  for (bool seen : rom5_seen) rom5_read += seen;
+  for (bool seen : rom38_seen) rom38_read += seen;
+  std::cout << "specular_romgen --check: " << lines << " reads; ROM 5 words read " << rom5_read << " of "
+            << rom5_seen.size() << ", ROM 38 words read " << rom38_read << " of " << rom38_total
+            << '\n';
+  if (rom5_read != rom5_seen.size() || rom38_read != rom38_total) {
+    std::cerr << "specular_romgen --check: the dump does not read every ROM word\n";
+    return 1;
+  }
+  std::cout << "specular_romgen --check: every word equals the C++ table's\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    const Options o = parse(argc, argv);
+    if (!o.check_path.empty()) return check_dump(o);
+    write_images(o);
+    return 0;
+  } catch (const UsageError& e) {
+    std::cerr << "specular_romgen: " << e.what() << '\n';
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "specular_romgen: internal error: " << e.what() << '\n';
+    return 3;
+  }
+}

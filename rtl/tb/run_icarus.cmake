@@ -1,0 +1,89 @@
+# rtl_icarus_*: specular_tb writes the vectors (--format csv; the pin model's hex codes)
+# for one policy combination, Icarus compiles the device with specular_device_tb.v and
+# replays them. Stimulus: groups of operations with n, R, G, B unchanged (back-to-back
+# starts at 2 T), edge cases of cos and n, then random operations (a reload, 3 T, each).
+# CORRUPT=ON: one expected value is changed first, and the testbench must stop with a
+# MISMATCH on that vector (the testbench can fail).
+file(REMOVE_RECURSE ${SCRATCH})
+file(MAKE_DIRECTORY ${SCRATCH})
+
+set(stimulus "cos,n,r,g,b\n")
+set(groups "1,255,255,255" "2,0,128,255" "3,1,2,3" "10,255,0,17" "64,200,100,50"
+           "500,255,255,255" "999,7,77,177" "1000,255,254,253")
+set(cosines 0 1 0.5 1.52587890625e-05 0.9999847412109375 0.70710678 0.25 0.999 0.05 0.9)
+foreach(group IN LISTS groups)
+  string(REPLACE "," ";" fields "${group}")
+  list(GET fields 0 n)
+  list(REMOVE_AT fields 0)
+  string(REPLACE ";" "," rgb "${fields}")
+  foreach(cos IN LISTS cosines)
+    string(APPEND stimulus "${cos},${n},${rgb}\n")
+  endforeach()
+endforeach()
+file(WRITE ${SCRATCH}/stimulus.csv "${stimulus}")
+
+string(LENGTH "${POLICY}${SATURATION}" seed)  # a different random draw per combination
+math(EXPR seed "${seed} * 7 + ${BANK}")
+execute_process(COMMAND ${SPECULAR_TB} --policy ${POLICY} --saturation ${SATURATION}
+                        --input ${SCRATCH}/stimulus.csv --format csv --output ${SCRATCH}/groups.csv
+                RESULT_VARIABLE status ERROR_VARIABLE summary)
+if(NOT status MATCHES "^[01]$")  # 1: a value outside the reference's tolerance (literal)
+  message(FATAL_ERROR "specular_tb --input failed (status ${status}): ${summary}")
+endif()
+execute_process(COMMAND ${SPECULAR_TB} --policy ${POLICY} --saturation ${SATURATION}
+                        --random 300 --seed ${seed} --format csv --output ${SCRATCH}/random.csv
+                RESULT_VARIABLE status ERROR_VARIABLE summary)
+if(NOT status MATCHES "^[01]$")
+  message(FATAL_ERROR "specular_tb --random failed (status ${status}): ${summary}")
+endif()
+
+file(STRINGS ${SCRATCH}/groups.csv groups_lines)
+file(STRINGS ${SCRATCH}/random.csv random_lines)
+list(REMOVE_AT random_lines 0)  # its header
+set(lines ${groups_lines} ${random_lines})
+set(corrupt_vector 37)
+if(CORRUPT)
+  # Vector 37 (line 38): flip the last hex digit of pin 26's expected code.
+  math(EXPR line_index "${corrupt_vector} + 1")
+  list(GET lines ${line_index} line)
+  string(REGEX MATCH "([0-9a-f]),[01]$" tail "${line}")
+  if(CMAKE_MATCH_1 STREQUAL "0")
+    set(digit 1)
+  else()
+    set(digit 0)
+  endif()
+  string(REGEX REPLACE "[0-9a-f](,[01])$" "${digit}\\1" line "${line}")
+  list(REMOVE_AT lines ${line_index})
+  list(INSERT lines ${line_index} "${line}")
+endif()
+string(REPLACE ";" "\n" vectors "${lines}")
+file(WRITE ${SCRATCH}/vectors.csv "${vectors}\n")
+
+if(SATURATION STREQUAL "literal")
+  set(literal 1)
+else()
+  set(literal 0)
+endif()
+execute_process(
+  COMMAND ${IVERILOG} -g2005 -Wall -o ${SCRATCH}/device_tb.vvp -s specular_device_tb
+          "-Pspecular_device_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+          "-Pspecular_device_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+          "-Pspecular_device_tb.VECTORS=\"${SCRATCH}/vectors.csv\""
+          -Pspecular_device_tb.LITERAL=${literal} -Pspecular_device_tb.BANK=${BANK}
+          ${SOURCES} ${TESTBENCH}
+  RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "iverilog failed (status ${status})")
+endif()
+execute_process(COMMAND ${VVP} -n ${SCRATCH}/device_tb.vvp RESULT_VARIABLE status
+                OUTPUT_VARIABLE out ERROR_VARIABLE out)
+message(STATUS "${out}")
+if(CORRUPT)
+  if(status EQUAL 0 OR NOT out MATCHES "MISMATCH vector ${corrupt_vector} [^\n]*pin 26")
+    message(FATAL_ERROR "the corrupted expected value of vector ${corrupt_vector} was not caught "
+            "(status ${status})")
+  endif()
+  message(STATUS "the testbench stopped on the corrupted vector ${corrupt_vector} (status ${status})")
+elseif(NOT status EQUAL 0 OR NOT out MATCHES "specular_device_tb: PASS" OR out MATCHES "WARNING")
+  message(FATAL_ERROR "specular_device_tb failed (status ${status})")
+endif()

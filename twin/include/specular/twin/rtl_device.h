@@ -1,0 +1,97 @@
+// The RTL twin behind the pin interface: rtl/specular_device.v, verilated into a
+// SystemC module, wrapped so that DeviceHarness, the protocol checker and specular_tb
+// drive it exactly as they drive the SystemC netlist.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "specular/core.h"
+#include "specular/device_harness.h"
+#include "specular/protocol_checker.h"
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// Pins 17–35 as code_t buses and bool wires, like SpecularDevice. Inside, one
+/// SC_METHOD hands every input pin to the verilated model in the same delta (so
+/// their order at one instant is kept: a strobe and its data, start and the clock),
+/// and one SC_METHOD brings every output back, sign-extending the signed buses
+/// (Verilator's ports are unsigned uint32_t/uint64_t). Policies reach the model as
+/// its configuration inputs, tied off here: cfg_literal = Saturation::literal,
+/// cfg_rom38_bank = the Normalisation's ROM 38 image (docs/rtl.md).
+///
+/// The model is verilated at the default widths (docs/design.md); a Config with other
+/// widths is refused with std::invalid_argument.
+class RtlDevice : public sc_core::sc_module {
+ public:
+  bus_in pin17_cos{"pin17_cos"};
+  bus_in pin18_n{"pin18_n"};
+  bus_in pin19_half{"pin19_half"};
+  bus_in pin20_one{"pin20_one"};
+  bus_in pin21_r{"pin21_r"};
+  bus_in pin22_g{"pin22_g"};
+  bus_in pin23_b{"pin23_b"};
+  bus_out pin24_r{"pin24_r"};
+  bus_out pin25_g{"pin25_g"};
+  bus_out pin26_b{"pin26_b"};
+  wire_in pin27_start{"pin27_start"};
+  wire_in pin28_clk{"pin28_clk"};
+  wire_in pin29_reset_n{"pin29_reset_n"};
+  wire_in pin30_load_n{"pin30_load_n"};
+  wire_in pin31_load_r{"pin31_load_r"};
+  wire_in pin32_load_g{"pin32_load_g"};
+  wire_in pin33_load_b{"pin33_load_b"};
+  wire_in pin34_carry{"pin34_carry"};
+  wire_out pin35_done{"pin35_done"};
+
+  /// `real_views` is accepted for DeviceHarness's sake and refused when true: the
+  /// twin's waveform is Verilator's own (open_vcd), codes only.
+  RtlDevice(sc_core::sc_module_name name, const Config& config = Config{},
+            bool real_views = false);
+  ~RtlDevice() override;
+
+  const Config& config() const { return config_; }
+  const Formats& formats() const { return formats_; }
+  code_t constant_half19() const { return formats_.half_code(); }
+  code_t constant_one20() const { return formats_.one_code(); }
+
+  /// The SystemC trace file gets nothing from the twin: its nets are traced by
+  /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw).
+  void trace(sc_core::sc_trace_file*) const {}
+  /// Trace every net of the RTL (pins, Fig. 1's buses, control unit 16) to `path`
+  /// from the start of simulation on. Call before sc_start.
+  void open_vcd(const std::string& path);
+
+  // ---- what the harness and the protocol checker watch (observation outputs) ----
+  wire select36{"select36"};
+  wire write37{"write37"};
+  wire q41{"q41"};
+  wire q42{"q42"};
+  wire nand45{"nand45"};
+  bus_signal reg1_q{"reg1_q"};
+  bus_signal reg9_q{"reg9_q"};
+  bus_signal rom38_k{"rom38_k"};
+  bus_signal mul39_norm{"mul39_norm"};
+
+  /// Watches the pins and control unit 16, as in SpecularDevice (report_ids.h).
+  ProtocolChecker protocol_checker{"protocol_checker"};
+
+ private:
+  struct Verilated;  // the verilated module and its typed signals (rtl_device.cpp)
+
+  void start_of_simulation() override;
+  void end_of_simulation() override;
+  void drive_inputs();
+  void read_outputs();
+
+  Config config_;
+  Formats formats_;
+  std::unique_ptr<Verilated> rtl_;
+  std::string vcd_path_;
+};
+
+using RtlHarness = DeviceHarness<RtlDevice>;
+extern template class DeviceHarness<RtlDevice>;  // instantiated in rtl_device.cpp
+
+}  // namespace specular

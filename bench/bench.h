@@ -72,8 +72,17 @@ enum class Trace {
   vcd,             ///< every pin and net, as `specular_tb --vcd` traces them
   vcd_real_views,  ///< the same plus the *_real views (`specular_tb --vcd --real-views`)
 };
-/// The pin-level device (PinHarness). `stream`: n/RGB held per block.
-void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace);
+/// Which device DeviceHarness drives in measure_pin.
+enum class PinDevice {
+  netlist,  ///< the SystemC netlist of Fig. 1–2 (PinHarness)
+  rtl,      ///< the RTL twin, verilated (RtlHarness)
+  floor,    ///< FloorDevice: timing only, no arithmetic (the harness and kernel's floor)
+};
+/// A pin-level device under DeviceHarness. `stream`: n/RGB held per block.
+void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace,
+                 PinDevice device = PinDevice::netlist);
+/// The RTL twin as plain C++ (RtlCycleModel), clocked without the kernel.
+void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream);
 
 /// How a TLM model is driven (SpecularDriver over a simple_initiator_socket).
 struct TlmOptions {

@@ -51,6 +51,26 @@ const std::vector<Model>& models() {
       {"pin_stream",
        [](const Plan& p) { measure_pin(p, "pin_stream", true, Trace::off); },
        400'000, 8192, 1, "pin-level device, n/RGB held per 256 results (2 T), no trace"},
+      // The RTL twin under the same harness, the harness's floor (a device that only
+      // keeps time), and the twin as plain C++ without the kernel (docs/rtl.md).
+      {"rtl_vcd_off",
+       [](const Plan& p) { measure_pin(p, "rtl_vcd_off", false, Trace::off, PinDevice::rtl); },
+       400'000, 8192, 1, "RTL twin (verilated) under the pin harness, as pin_vcd_off (3 T)"},
+      {"rtl_stream",
+       [](const Plan& p) { measure_pin(p, "rtl_stream", true, Trace::off, PinDevice::rtl); },
+       400'000, 8192, 1, "RTL twin under the pin harness, as pin_stream (2 T)"},
+      {"floor_vcd_off",
+       [](const Plan& p) { measure_pin(p, "floor_vcd_off", false, Trace::off, PinDevice::floor); },
+       400'000, 8192, 1, "the harness with a device that only keeps time (3 T): the floor"},
+      {"floor_stream",
+       [](const Plan& p) { measure_pin(p, "floor_stream", true, Trace::off, PinDevice::floor); },
+       400'000, 8192, 1, "the harness's floor, streaming (2 T)"},
+      {"rtl_cpp",
+       [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_cpp", false); },
+       4'000'000, 100'000, 3, "RTL twin as plain C++ (RtlCycleModel), random n/RGB (3 T)"},
+      {"rtl_cpp_stream",
+       [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_cpp_stream", true); },
+       8'000'000, 200'000, 3, "RTL twin as plain C++, n/RGB held per 256 results (2 T)"},
       {"pin_vcd_on",
        [](const Plan& p) { measure_pin(p, "pin_vcd_on", false, Trace::vcd); },
        100'000, 4096, 1, "pin-level device as pin_vcd_off, every pin and net to VCD (specular_tb --vcd)"},
@@ -207,12 +227,24 @@ int run_all(bool quick, std::uint64_t seed, const std::string& vcd_stem) {
   met("pin_stream", true, 0.01);   // shown beside it: one material streams at 2 T
   met("vcd_slowdown", false, 6.0);
   met("tlm_lt_batch", true, 0.7);
+  // The RTL twin (docs/rtl.md): under the harness at least 2x the netlist, and the
+  // plain C++ model at least 10 M results/s.
+  if (figures.count("rtl_vcd_off_rate") != 0 && figures["pin_vcd_off_rate"] > 0) {
+    print_figure("rtl_vs_pin", figures["rtl_vcd_off_rate"] / figures["pin_vcd_off_rate"], "x");
+    print_figure("rtl_stream_vs_pin_stream", figures["rtl_stream_rate"] / figures["pin_stream_rate"], "x");
+    print_figure("floor_vs_pin", figures["floor_vcd_off_rate"] / figures["pin_vcd_off_rate"], "x");
+    print_figure("target_rtl_vs_pin", figures["rtl_vcd_off_rate"] >= 2 * figures["pin_vcd_off_rate"] ? 1 : 0, "bool");
+  }
+  if (figures.count("rtl_cpp_rate") != 0)
+    print_figure("target_rtl_cpp", figures["rtl_cpp_rate"] >= 10.0 ? 1 : 0, "bool");
 
   // Every model must give the core's results to the bit on the same inputs.
   bool exact = texts.count("core_checksum") != 0;
   for (const Model& m : models()) {
     if (m.name == "pow" || m.name == "pow_end" || m.name == "core") continue;
-    const bool stream = m.name == "pin_stream" || m.name.find("_batch") != std::string::npos;
+    if (m.name.rfind("floor_", 0) == 0) continue;  // computes nothing, by design
+    const bool stream = m.name.find("_stream") != std::string::npos ||
+                        m.name.find("_batch") != std::string::npos;
     const std::string reference = stream ? "core_stream_checksum" : "core_checksum";
     const auto it = texts.find(m.name + "_checksum");
     // A growth run shorter than the shared prefix hashes fewer results: not comparable.

@@ -4,9 +4,12 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <type_traits>
 
 #include "bench.h"
+#include "floor_device.h"
 #include "specular/pin_harness.h"
+#include "specular/twin/rtl_device.h"
 
 namespace specular_bench {
 
@@ -22,6 +25,7 @@ const sc_time clock_period(10, sc_core::SC_NS);
 /// is lost in the noise, few enough that the result vectors stay in cache.
 constexpr std::size_t chunk = 4096;
 
+template <class Harness>
 class PinBench : public sc_core::sc_module {
  public:
   PinBench(sc_core::sc_module_name name, const Plan& plan, bool stream, bool real_views)
@@ -34,7 +38,7 @@ class PinBench : public sc_core::sc_module {
     SC_THREAD(drive);
   }
 
-  specular::PinHarness harness;
+  Harness harness;
   Checksum verify;
   Checksum work;
   double seconds = 0.0;
@@ -69,13 +73,14 @@ class PinBench : public sc_core::sc_module {
   std::vector<Operands> ring_;
 };
 
-}  // namespace
-
-void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace) {
+template <class Harness>
+void measure_with(const Plan& plan, const std::string& name, bool stream, Trace trace) {
   const bool vcd = trace != Trace::off;
-  PinBench bench("bench", plan, stream, trace == Trace::vcd_real_views);
+  PinBench<Harness> bench("bench", plan, stream, trace == Trace::vcd_real_views);
   sc_core::sc_trace_file* file = nullptr;
-  if (vcd) {
+  if constexpr (std::is_same_v<Harness, specular::RtlHarness>) {
+    if (vcd) bench.harness.dut.open_vcd(plan.vcd_path + ".vcd");  // Verilator's writer
+  } else if (vcd) {
     file = sc_core::sc_create_vcd_trace_file(plan.vcd_path.c_str());  // appends ".vcd"
     bench.harness.trace(file);
   }
@@ -96,6 +101,18 @@ void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace t
   print_checksum(name + "_checksum", bench.verify.value);
   print_checksum(name + "_work", bench.work.value);
   print_figure(name + "_peak_memory", static_cast<double>(peak_memory_kb()), "kB");
+}
+
+}  // namespace
+
+void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace,
+                 PinDevice device) {
+  switch (device) {
+    case PinDevice::netlist: return measure_with<specular::PinHarness>(plan, name, stream, trace);
+    case PinDevice::rtl: return measure_with<specular::RtlHarness>(plan, name, stream, trace);
+    case PinDevice::floor:
+      return measure_with<specular::DeviceHarness<FloorDevice>>(plan, name, stream, trace);
+  }
 }
 
 }  // namespace specular_bench

@@ -3,6 +3,8 @@
 // bit for bit", "sample the pin model"): every field of every result equals the
 // core's, every result is within the bounds of the double reference, and every
 // latency is 2.5 periods. The printed summary is the pin row of docs/accuracy.md.
+// The same for the RTL twin under the same harness (`--model rtl`): equal to the core,
+// and so to the pin model, bit for bit, at 2.5 periods per operation.
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -20,13 +22,12 @@ namespace specular {
 namespace tb {
 namespace {
 
-class PinSweep : public testing_support::PolicyTest {};
-
-TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) {
+/// Runs the sweep on `model` under the test's policy and checks every result.
+void sweep_against_core(Model model, const testing_support::PolicyTest::ParamType& policy) {
   RunSettings settings;
-  settings.model = Model::pin;
-  settings.config.normalisation = std::get<0>(GetParam());
-  settings.config.saturation = std::get<1>(GetParam());
+  settings.model = model;
+  settings.config.normalisation = std::get<0>(policy);
+  settings.config.saturation = std::get<1>(policy);
   const Core core(settings.config);
   const Formats& f = core.formats();
   SweepSource sweep(f, {255, 128, 1});
@@ -59,13 +60,13 @@ TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) {
   const Summary& s = scoreboard.summary();
   std::ostringstream text;
   RunDescription run;
-  run.model = "pin";
+  run.model = to_string(model);
   run.config = settings.config;
   write_summary_text(text, s, run, -1);
-  std::cout << "policy=" << to_string(settings.config.normalisation)
+  std::cout << "model=" << to_string(model) << " policy=" << to_string(settings.config.normalisation)
             << " saturation=" << to_string(settings.config.saturation) << '\n'
             << text.str() << std::flush;
-  RecordProperty("summary", text.str());
+  ::testing::Test::RecordProperty("summary", text.str());
 
   EXPECT_EQ(s.count, 1021000u);
   EXPECT_EQ(mismatches, 0u) << "first at " << first_mismatch;
@@ -74,7 +75,15 @@ TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) {
   EXPECT_EQ(s.cycles_max, 2.5);
 }
 
+class PinSweep : public testing_support::PolicyTest {};
+class RtlSweep : public testing_support::PolicyTest {};
+
+TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) { sweep_against_core(Model::pin, GetParam()); }
+TEST_P(RtlSweep, RtlEqualsCoreBitForBitAndMeetsTheBounds) { sweep_against_core(Model::rtl, GetParam()); }
+
 INSTANTIATE_TEST_SUITE_P(Policies, PinSweep, testing_support::every_policy(),
+                         testing_support::policy_name);
+INSTANTIATE_TEST_SUITE_P(Policies, RtlSweep, testing_support::every_policy(),
                          testing_support::policy_name);
 
 }  // namespace

@@ -49,8 +49,8 @@ class RtlCycleModel::Engine {
 
 namespace {
 
-/// Time counts in quarter periods: rising clock edges at 4k, falling at 4k + 2, and
-/// n, R, G, B with their strobes at 4k − 1 (a quarter period before a start).
+/// Time counts in quarter periods (two per clock edge); n, R, G, B and their strobes
+/// come a quarter period before a start, when they change.
 template <class Model>
 class VerilatedEngine final : public RtlCycleModel::Engine {
  public:
@@ -106,7 +106,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
       }
       top_.pin30_load_n = top_.pin31_load_r = top_.pin32_load_g = top_.pin33_load_b = 0;
       top_.pin17_cos = static_cast<unsigned>(low_bits(op.cos, formats_.cos.width()));
-      start_quarter_[started_ % 2] = quarter_ + 4;  // the coming rising edge
+      start_quarter_[started_ % 2] = quarter_ + 2;  // the coming rising edge
       ++started_;
       ++pending_;
       edge(true, true);    // start: register 1 ← pin 17, Q41 ← 1 (and a previous pass 2)

@@ -1,11 +1,14 @@
+// Verilator's headers first: they define vl_time_stamp64() one way with SystemC's
+// headers already seen and another without, and the model was compiled without them.
+#include <verilated.h>
+#include <verilated_vcd_c.h>
+
+#include "Vspecular_device_cc.h"
+
 #include "specular/twin/rtl_device.h"
 
 #include <stdexcept>
 
-#include <verilated.h>
-#include <verilated_vcd_sc.h>
-
-#include "Vspecular_device_sc.h"
 #include "specular/arith.h"
 
 namespace specular {
@@ -34,43 +37,14 @@ bool default_formats(const Formats& f) {
 
 }  // namespace
 
-/// The verilated module, the signals of Verilator's port types between it and the
-/// adapter's pins, and Verilator's waveform writer.
+/// The verilated model (plain C++, evaluated from this module's one process) and
+/// Verilator's waveform writer.
 struct RtlDevice::Verilated {
-  explicit Verilated(const char* name) : top(name) {}
-
-  Vspecular_device_sc top;
-  sc_core::sc_signal<std::uint32_t> pin17_cos{"rtl_pin17_cos"};
-  sc_core::sc_signal<std::uint32_t> pin18_n{"rtl_pin18_n"};
-  sc_core::sc_signal<std::uint32_t> pin19_half{"rtl_pin19_half"};
-  sc_core::sc_signal<std::uint64_t> pin20_one{"rtl_pin20_one"};
-  sc_core::sc_signal<std::uint32_t> pin21_r{"rtl_pin21_r"};
-  sc_core::sc_signal<std::uint32_t> pin22_g{"rtl_pin22_g"};
-  sc_core::sc_signal<std::uint32_t> pin23_b{"rtl_pin23_b"};
-  sc_core::sc_signal<std::uint32_t> pin24_r{"rtl_pin24_r"};
-  sc_core::sc_signal<std::uint32_t> pin25_g{"rtl_pin25_g"};
-  sc_core::sc_signal<std::uint32_t> pin26_b{"rtl_pin26_b"};
-  sc_core::sc_signal<bool> pin27_start{"rtl_pin27_start"};
-  sc_core::sc_signal<bool> pin28_clk{"rtl_pin28_clk"};
-  sc_core::sc_signal<bool> pin29_reset_n{"rtl_pin29_reset_n"};
-  sc_core::sc_signal<bool> pin30_load_n{"rtl_pin30_load_n"};
-  sc_core::sc_signal<bool> pin31_load_r{"rtl_pin31_load_r"};
-  sc_core::sc_signal<bool> pin32_load_g{"rtl_pin32_load_g"};
-  sc_core::sc_signal<bool> pin33_load_b{"rtl_pin33_load_b"};
-  sc_core::sc_signal<bool> pin34_carry{"rtl_pin34_carry"};
-  sc_core::sc_signal<bool> pin35_done{"rtl_pin35_done"};
-  sc_core::sc_signal<bool> cfg_literal{"rtl_cfg_literal"};
-  sc_core::sc_signal<std::uint32_t> cfg_rom38_bank{"rtl_cfg_rom38_bank"};
-  sc_core::sc_signal<bool> obs_select36{"rtl_obs_select36"};
-  sc_core::sc_signal<bool> obs_write37{"rtl_obs_write37"};
-  sc_core::sc_signal<bool> obs_q41{"rtl_obs_q41"};
-  sc_core::sc_signal<bool> obs_q42{"rtl_obs_q42"};
-  sc_core::sc_signal<bool> obs_nand45{"rtl_obs_nand45"};
-  sc_core::sc_signal<std::uint32_t> obs_reg1_q{"rtl_obs_reg1_q"};
-  sc_core::sc_signal<std::uint64_t> obs_reg9_q{"rtl_obs_reg9_q"};
-  sc_core::sc_signal<std::uint32_t> obs_rom38_k{"rtl_obs_rom38_k"};
-  sc_core::sc_signal<std::uint32_t> obs_mul39_norm{"rtl_obs_mul39_norm"};
-  std::unique_ptr<VerilatedVcdSc> vcd;
+  VerilatedContext context;
+  Vspecular_device_cc top{&context};
+  std::unique_ptr<VerilatedVcdC> vcd;
+  std::uint64_t last_eval_ps = 0;  ///< when the model was last evaluated
+  bool evaluated = false;
 };
 
 RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
@@ -84,42 +58,10 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
         "the RTL twin has no real-valued views: its VCD holds the RTL's own nets as codes "
         "(waveforms/specular_rtl.gtkw shows them as real numbers)");
   SPECULAR_HAS_PROCESS(RtlDevice);
-  rtl_ = std::make_unique<Verilated>("rtl");
-  Verilated& v = *rtl_;
-  Vspecular_device_sc& top = v.top;
-  top.pin17_cos(v.pin17_cos);
-  top.pin18_n(v.pin18_n);
-  top.pin19_half(v.pin19_half);
-  top.pin20_one(v.pin20_one);
-  top.pin21_r(v.pin21_r);
-  top.pin22_g(v.pin22_g);
-  top.pin23_b(v.pin23_b);
-  top.pin24_r(v.pin24_r);
-  top.pin25_g(v.pin25_g);
-  top.pin26_b(v.pin26_b);
-  top.pin27_start(v.pin27_start);
-  top.pin28_clk(v.pin28_clk);
-  top.pin29_reset_n(v.pin29_reset_n);
-  top.pin30_load_n(v.pin30_load_n);
-  top.pin31_load_r(v.pin31_load_r);
-  top.pin32_load_g(v.pin32_load_g);
-  top.pin33_load_b(v.pin33_load_b);
-  top.pin34_carry(v.pin34_carry);
-  top.pin35_done(v.pin35_done);
-  top.cfg_literal(v.cfg_literal);
-  top.cfg_rom38_bank(v.cfg_rom38_bank);
-  top.obs_select36(v.obs_select36);
-  top.obs_write37(v.obs_write37);
-  top.obs_q41(v.obs_q41);
-  top.obs_q42(v.obs_q42);
-  top.obs_nand45(v.obs_nand45);
-  top.obs_reg1_q(v.obs_reg1_q);
-  top.obs_reg9_q(v.obs_reg9_q);
-  top.obs_rom38_k(v.obs_rom38_k);
-  top.obs_mul39_norm(v.obs_mul39_norm);
+  rtl_ = std::make_unique<Verilated>();
   // The policies, tied off for the life of the device (configuration inputs).
-  v.cfg_literal.write(config.saturation == Saturation::literal);
-  v.cfg_rom38_bank.write(static_cast<std::uint32_t>(config.normalisation));
+  rtl_->top.cfg_literal = config.saturation == Saturation::literal;
+  rtl_->top.cfg_rom38_bank = static_cast<unsigned>(config.normalisation);
 
   protocol_checker.start(pin27_start);
   protocol_checker.clk(pin28_clk);
@@ -133,75 +75,81 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
   protocol_checker.q42(q42);
   protocol_checker.nand45(nand45);
 
-  SC_METHOD(drive_inputs);
+  // One process: every input pin changed in a delta reaches the model together (a
+  // strobe and its data, start and the clock keep their order at one instant), the
+  // model settles in one eval, and the outputs change one delta later.
+  SC_METHOD(evaluate);
   sensitive << pin17_cos << pin18_n << pin19_half << pin20_one << pin21_r << pin22_g << pin23_b
             << pin27_start << pin28_clk << pin29_reset_n << pin30_load_n << pin31_load_r
             << pin32_load_g << pin33_load_b << pin34_carry;
-  SC_METHOD(read_outputs);
-  sensitive << v.pin24_r << v.pin25_g << v.pin26_b << v.pin35_done << v.obs_select36
-            << v.obs_write37 << v.obs_q41 << v.obs_q42 << v.obs_nand45 << v.obs_reg1_q
-            << v.obs_reg9_q << v.obs_rom38_k << v.obs_mul39_norm;
-  // Outputs start as the netlist's do (35 high, AND 40 idle high): the first
-  // read_outputs runs with the model's first evaluation.
+  // Outputs start as the netlist's do (35 high, NAND 45 high) until the first eval.
   pin35_done.initialize(true);
   nand45.write(true);
 }
 
 RtlDevice::~RtlDevice() = default;
 
-void RtlDevice::drive_inputs() {
+void RtlDevice::evaluate() {
   const Formats& f = formats_;
   Verilated& v = *rtl_;
-  v.pin17_cos.write(port_bits<std::uint32_t>(pin17_cos.read(), f.cos.width()));
-  v.pin18_n.write(port_bits<std::uint32_t>(pin18_n.read(), f.n.width()));
-  v.pin19_half.write(port_bits<std::uint32_t>(pin19_half.read(), f.mux4.width()));
-  v.pin20_one.write(port_bits<std::uint64_t>(pin20_one.read(), f.reg9.width()));
-  v.pin21_r.write(port_bits<std::uint32_t>(pin21_r.read(), f.rgb.width()));
-  v.pin22_g.write(port_bits<std::uint32_t>(pin22_g.read(), f.rgb.width()));
-  v.pin23_b.write(port_bits<std::uint32_t>(pin23_b.read(), f.rgb.width()));
-  v.pin27_start.write(pin27_start.read());
-  v.pin28_clk.write(pin28_clk.read());
-  v.pin29_reset_n.write(pin29_reset_n.read());
-  v.pin30_load_n.write(pin30_load_n.read());
-  v.pin31_load_r.write(pin31_load_r.read());
-  v.pin32_load_g.write(pin32_load_g.read());
-  v.pin33_load_b.write(pin33_load_b.read());
-  v.pin34_carry.write(pin34_carry.read());
-}
-
-void RtlDevice::read_outputs() {
-  const Formats& f = formats_;
-  const Verilated& v = *rtl_;
+  Vspecular_device_cc& top = v.top;
+  const std::uint64_t now_ps = sc_core::sc_time_stamp().value();
+  // The waveform holds each instant's settled values: the state left by the last
+  // evaluation at an earlier instant is dumped at that instant, before it changes.
+  if (v.vcd && v.evaluated && now_ps > v.last_eval_ps) v.vcd->dump(v.last_eval_ps);
+  top.pin17_cos = static_cast<std::uint32_t>(port_bits<std::uint64_t>(pin17_cos.read(), f.cos.width()));
+  top.pin18_n = static_cast<std::uint16_t>(port_bits<std::uint64_t>(pin18_n.read(), f.n.width()));
+  top.pin19_half = static_cast<std::uint16_t>(port_bits<std::uint64_t>(pin19_half.read(), f.mux4.width()));
+  top.pin20_one = port_bits<std::uint64_t>(pin20_one.read(), f.reg9.width());
+  top.pin21_r = static_cast<std::uint8_t>(port_bits<std::uint64_t>(pin21_r.read(), f.rgb.width()));
+  top.pin22_g = static_cast<std::uint8_t>(port_bits<std::uint64_t>(pin22_g.read(), f.rgb.width()));
+  top.pin23_b = static_cast<std::uint8_t>(port_bits<std::uint64_t>(pin23_b.read(), f.rgb.width()));
+  top.pin27_start = pin27_start.read();
+  top.pin28_clk = pin28_clk.read();
+  top.pin29_reset_n = pin29_reset_n.read();
+  top.pin30_load_n = pin30_load_n.read();
+  top.pin31_load_r = pin31_load_r.read();
+  top.pin32_load_g = pin32_load_g.read();
+  top.pin33_load_b = pin33_load_b.read();
+  top.pin34_carry = pin34_carry.read();
+  top.eval();
+  v.last_eval_ps = now_ps;
+  v.evaluated = true;
   // Signed buses come back sign-extended from their width (arith::wrap).
-  pin24_r.write(arith::wrap(f.out, static_cast<code_t>(v.pin24_r.read())));
-  pin25_g.write(arith::wrap(f.out, static_cast<code_t>(v.pin25_g.read())));
-  pin26_b.write(arith::wrap(f.out, static_cast<code_t>(v.pin26_b.read())));
-  pin35_done.write(v.pin35_done.read());
-  select36.write(v.obs_select36.read());
-  write37.write(v.obs_write37.read());
-  q41.write(v.obs_q41.read());
-  q42.write(v.obs_q42.read());
-  nand45.write(v.obs_nand45.read());
-  reg1_q.write(static_cast<code_t>(v.obs_reg1_q.read()));
-  reg9_q.write(arith::wrap(f.reg9, static_cast<code_t>(v.obs_reg9_q.read())));
-  rom38_k.write(static_cast<code_t>(v.obs_rom38_k.read()));
-  mul39_norm.write(arith::wrap(f.norm, static_cast<code_t>(v.obs_mul39_norm.read())));
+  pin24_r.write(arith::wrap(f.out, static_cast<code_t>(top.pin24_r)));
+  pin25_g.write(arith::wrap(f.out, static_cast<code_t>(top.pin25_g)));
+  pin26_b.write(arith::wrap(f.out, static_cast<code_t>(top.pin26_b)));
+  pin35_done.write(top.pin35_done);
+  select36.write(top.obs_select36);
+  write37.write(top.obs_write37);
+  q41.write(top.obs_q41);
+  q42.write(top.obs_q42);
+  nand45.write(top.obs_nand45);
+  reg1_q.write(static_cast<code_t>(top.obs_reg1_q));
+  reg9_q.write(arith::wrap(f.reg9, static_cast<code_t>(top.obs_reg9_q)));
+  rom38_k.write(static_cast<code_t>(top.obs_rom38_k));
+  mul39_norm.write(arith::wrap(f.norm, static_cast<code_t>(top.obs_mul39_norm)));
 }
 
 void RtlDevice::open_vcd(const std::string& path) {
   vcd_path_ = path;
-  ::Verilated::traceEverOn(true);
+  rtl_->context.traceEverOn(true);
 }
 
 void RtlDevice::start_of_simulation() {
   if (vcd_path_.empty()) return;
-  rtl_->vcd = std::make_unique<VerilatedVcdSc>();
+  rtl_->vcd = std::make_unique<VerilatedVcdC>();
   rtl_->top.trace(rtl_->vcd.get(), 99);
+  // SystemC's time resolution (1 ps by default) is the waveform's time unit.
+  rtl_->vcd->set_time_resolution("1ps");
+  rtl_->vcd->set_time_unit("1ps");
   rtl_->vcd->open(vcd_path_.c_str());
 }
 
 void RtlDevice::end_of_simulation() {
-  if (rtl_->vcd) rtl_->vcd->close();
+  if (!rtl_->vcd) return;
+  if (rtl_->evaluated) rtl_->vcd->dump(rtl_->last_eval_ps);
+  rtl_->vcd->close();
 }
 
 template class DeviceHarness<RtlDevice>;

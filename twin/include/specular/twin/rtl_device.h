@@ -13,12 +13,14 @@
 
 namespace specular {
 
-/// Pins 17–35 as code_t buses and bool wires, like SpecularDevice. Inside, one
-/// SC_METHOD hands every input pin to the verilated model in the same delta (so
-/// their order at one instant is kept: a strobe and its data, start and the clock),
-/// and one SC_METHOD brings every output back, sign-extending the signed buses
-/// (Verilator's ports are unsigned uint32_t/uint64_t). Policies reach the model as
-/// its configuration inputs, tied off here: cfg_literal = Saturation::literal,
+/// Pins 17–35 as code_t buses and bool wires, like SpecularDevice. Inside, the
+/// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to every
+/// input pin, that copies the pins into the model, evaluates it and writes its
+/// outputs back, sign-extending the signed buses. One process activation per input
+/// change: Verilator's own SystemC wrapper, with signals of its port types and
+/// adapters in between, took about 4 process activations per clock edge and ran
+/// slower than the netlist (docs/performance.md). Policies reach the model as its
+/// configuration inputs, tied off here: cfg_literal = Saturation::literal,
 /// cfg_rom38_bank = the Normalisation's ROM 38 image (docs/rtl.md).
 ///
 /// The model is verilated at the default widths (docs/design.md); a Config with other
@@ -82,8 +84,7 @@ class RtlDevice : public sc_core::sc_module {
 
   void start_of_simulation() override;
   void end_of_simulation() override;
-  void drive_inputs();
-  void read_outputs();
+  void evaluate();
 
   Config config_;
   Formats formats_;

@@ -90,6 +90,7 @@ struct TlmOptions {
   bool batch = false;    ///< BATCH_COS bursts on the streaming inputs, else compute() per result
   sc_core::sc_time quantum;  ///< global quantum of the tlm_quantumkeeper; zero: no decoupling
   bool burst = false;    ///< compute_burst() per result (OPERANDS / RESULTS), else compute()
+  bool rtl = false;      ///< SpecularRtlTarget (the RTL twin clocked in b_transport); overrides pin
 };
 void measure_tlm(const Plan& plan, const std::string& name, const TlmOptions& options);
 

@@ -9,6 +9,7 @@
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "specular/twin/rtl_target.h"
 
 namespace specular_bench {
 
@@ -25,7 +26,9 @@ class TlmBench : public sc_core::sc_module {
   TlmBench(sc_core::sc_module_name name, const Plan& plan, const TlmOptions& options)
       : sc_module(name), plan_(plan), options_(options), ring_(random_operands(core_, plan.seed)) {
     SPECULAR_HAS_PROCESS(TlmBench);
-    if (options.pin)
+    if (options.rtl)
+      target_ = std::make_unique<specular::SpecularRtlTarget>("ip", specular::Config{}, clock_period);
+    else if (options.pin)
       target_ = std::make_unique<specular::SpecularPinTarget>("ip", specular::Config{}, clock_period);
     else
       target_ = std::make_unique<specular::SpecularLtTarget>("ip", specular::Config{}, clock_period);

@@ -133,7 +133,7 @@ TEST(CliOptions, UnknownOptionsAndMissingValues) {
 }
 
 TEST(CliOptions, ChoicesNameTheAllowedValues) {
-  expect_error({"--sweep", "--model", "rtl"}, {"--model", "'rtl'", "pin, core"});
+  expect_error({"--sweep", "--model", "gates"}, {"--model", "'gates'", "pin, core, tlm, rtl"});
   expect_error({"--sweep", "--policy", "phong"}, {"--policy", "'phong'", "patent, energy, none"});
   expect_error({"--sweep", "--saturation", "wrap"}, {"--saturation", "'wrap'", "clamp, literal"});
   expect_error({"--sweep", "--format", "xml"}, {"--format", "'xml'", "text, csv, json"});

@@ -1,4 +1,4 @@
-// A bench for the TLM tests (test_tlm_*): one or two targets (lt, pin), each behind
+// A bench for the TLM tests (test_tlm_*): one or more targets (lt, pin, rtl), each behind
 // its own initiator socket with a SpecularDriver, its done_irq recorded edge by edge,
 // and scenario threads that run the test body. One elaboration per TEST.
 #pragma once
@@ -19,6 +19,7 @@
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "specular/twin/rtl_target.h"
 
 namespace specular {
 namespace tlm_testing {
@@ -26,9 +27,11 @@ namespace tlm_testing {
 using sc_core::sc_time;
 using sc_core::SC_NS;
 
-enum class Kind { lt, pin };
+enum class Kind { lt, pin, rtl };
 
-inline const char* to_string(Kind kind) { return kind == Kind::lt ? "lt" : "pin"; }
+inline const char* to_string(Kind kind) {
+  return kind == Kind::lt ? "lt" : kind == Kind::pin ? "pin" : "rtl";
+}
 
 /// One target with the initiator side that talks to it.
 class Endpoint : public sc_core::sc_module {
@@ -38,8 +41,10 @@ class Endpoint : public sc_core::sc_module {
     SPECULAR_HAS_PROCESS(Endpoint);
     if (kind == Kind::lt)
       target = std::make_unique<SpecularLtTarget>("target", config, period);
-    else
+    else if (kind == Kind::pin)
       target = std::make_unique<SpecularPinTarget>("target", config, period);
+    else
+      target = std::make_unique<SpecularRtlTarget>("target", config, period);
     socket.bind(target->socket);
     target->done_irq(irq);
     SC_METHOD(on_irq);

@@ -15,13 +15,6 @@ namespace specular {
 
 namespace {
 
-/// The low `width` bits of a code, as Verilator's unsigned port types carry them.
-template <class Port>
-Port port_bits(code_t code, int width) {
-  return static_cast<Port>(static_cast<std::uint64_t>(code) &
-                           ((width >= 64) ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1));
-}
-
 /// True when `f` are the formats the model was verilated with (rtl/ parameters'
 /// defaults, which are docs/design.md's: the default Widths).
 bool default_formats(const Formats& f) {
@@ -40,11 +33,23 @@ bool default_formats(const Formats& f) {
 /// The verilated model (plain C++, evaluated from this module's one process) and
 /// Verilator's waveform writer.
 struct RtlDevice::Verilated {
+  /// The model's outputs after the last evaluation, as its port bits.
+  struct Outputs {
+    std::uint64_t pin24, pin25, pin26, reg9, reg1, rom38, norm, done35, select36, q41, q42, nand45;
+  };
+  /// The channels bound to the input pins (end_of_elaboration).
+  struct Inputs {
+    const sc_core::sc_signal_in_if<code_t>*pin17, *pin18, *pin19, *pin20, *pin21, *pin22, *pin23;
+    const sc_core::sc_signal_in_if<bool>*pin27, *pin28, *pin29, *pin30, *pin31, *pin32, *pin33, *pin34;
+  };
   VerilatedContext context;
   Vspecular_device_cc top{&context};
   std::unique_ptr<VerilatedVcdC> vcd;
   std::uint64_t last_eval_ps = 0;  ///< when the model was last evaluated
   bool evaluated = false;
+  Inputs inputs{};
+  Outputs outputs{};
+  bool outputs_valid = false;
 };
 
 RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
@@ -75,13 +80,6 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
   protocol_checker.q42(q42);
   protocol_checker.nand45(nand45);
 
-  // One process: every input pin changed in a delta reaches the model together (a
-  // strobe and its data, start and the clock keep their order at one instant), the
-  // model settles in one eval, and the outputs change one delta later.
-  SC_METHOD(evaluate);
-  sensitive << pin17_cos << pin18_n << pin19_half << pin20_one << pin21_r << pin22_g << pin23_b
-            << pin27_start << pin28_clk << pin29_reset_n << pin30_load_n << pin31_load_r
-            << pin32_load_g << pin33_load_b << pin34_carry;
   // Outputs start as the netlist's do (35 high, NAND 45 high) until the first eval.
   pin35_done.initialize(true);
   nand45.write(true);
@@ -90,48 +88,92 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
 RtlDevice::~RtlDevice() = default;
 
 void RtlDevice::evaluate() {
-  const Formats& f = formats_;
+  // The model runs at the default widths only (constructor): compile-time masks.
+  using F = DefaultFormats;
+  constexpr auto bits = [](code_t code, const FixedFormat& format) {
+    return static_cast<std::uint64_t>(code) & ((std::uint64_t{1} << format.width()) - 1);
+  };
   Verilated& v = *rtl_;
   Vspecular_device_cc& top = v.top;
-  const std::uint64_t now_ps = sc_core::sc_time_stamp().value();
-  // The waveform holds each instant's settled values: the state left by the last
-  // evaluation at an earlier instant is dumped at that instant, before it changes.
-  if (v.vcd && v.evaluated && now_ps > v.last_eval_ps) v.vcd->dump(v.last_eval_ps);
-  top.pin17_cos = static_cast<std::uint32_t>(port_bits<std::uint64_t>(pin17_cos.read(), f.cos.width()));
-  top.pin18_n = static_cast<std::uint16_t>(port_bits<std::uint64_t>(pin18_n.read(), f.n.width()));
-  top.pin19_half = static_cast<std::uint16_t>(port_bits<std::uint64_t>(pin19_half.read(), f.mux4.width()));
-  top.pin20_one = port_bits<std::uint64_t>(pin20_one.read(), f.reg9.width());
-  top.pin21_r = static_cast<std::uint8_t>(port_bits<std::uint64_t>(pin21_r.read(), f.rgb.width()));
-  top.pin22_g = static_cast<std::uint8_t>(port_bits<std::uint64_t>(pin22_g.read(), f.rgb.width()));
-  top.pin23_b = static_cast<std::uint8_t>(port_bits<std::uint64_t>(pin23_b.read(), f.rgb.width()));
-  top.pin27_start = pin27_start.read();
-  top.pin28_clk = pin28_clk.read();
-  top.pin29_reset_n = pin29_reset_n.read();
-  top.pin30_load_n = pin30_load_n.read();
-  top.pin31_load_r = pin31_load_r.read();
-  top.pin32_load_g = pin32_load_g.read();
-  top.pin33_load_b = pin33_load_b.read();
-  top.pin34_carry = pin34_carry.read();
+  if (v.vcd) {
+    // The waveform holds each instant's settled values: the state left by the last
+    // evaluation at an earlier instant is dumped at that instant, before it changes.
+    const std::uint64_t now_ps = sc_core::sc_time_stamp().value();
+    if (v.evaluated && now_ps > v.last_eval_ps) v.vcd->dump(v.last_eval_ps);
+    v.last_eval_ps = now_ps;
+    v.evaluated = true;
+  }
+  const Verilated::Inputs& in = v.inputs;
+  top.pin17_cos = static_cast<std::uint32_t>(bits(in.pin17->read(), F::cos));
+  top.pin18_n = static_cast<std::uint16_t>(bits(in.pin18->read(), F::n));
+  top.pin19_half = static_cast<std::uint16_t>(bits(in.pin19->read(), F::mux4));
+  top.pin20_one = bits(in.pin20->read(), F::reg9);
+  top.pin21_r = static_cast<std::uint8_t>(bits(in.pin21->read(), F::rgb));
+  top.pin22_g = static_cast<std::uint8_t>(bits(in.pin22->read(), F::rgb));
+  top.pin23_b = static_cast<std::uint8_t>(bits(in.pin23->read(), F::rgb));
+  top.pin27_start = in.pin27->read();
+  top.pin28_clk = in.pin28->read();
+  top.pin29_reset_n = in.pin29->read();
+  top.pin30_load_n = in.pin30->read();
+  top.pin31_load_r = in.pin31->read();
+  top.pin32_load_g = in.pin32->read();
+  top.pin33_load_b = in.pin33->read();
+  top.pin34_carry = in.pin34->read();
   top.eval();
-  v.last_eval_ps = now_ps;
-  v.evaluated = true;
-  // Signed buses come back sign-extended from their width (arith::wrap).
-  pin24_r.write(arith::wrap(f.out, static_cast<code_t>(top.pin24_r)));
-  pin25_g.write(arith::wrap(f.out, static_cast<code_t>(top.pin25_g)));
-  pin26_b.write(arith::wrap(f.out, static_cast<code_t>(top.pin26_b)));
-  pin35_done.write(top.pin35_done);
-  select36.write(top.obs_select36);
-  write37.write(top.obs_write37);
-  q41.write(top.obs_q41);
-  q42.write(top.obs_q42);
-  nand45.write(top.obs_nand45);
-  reg1_q.write(static_cast<code_t>(top.obs_reg1_q));
-  reg9_q.write(arith::wrap(f.reg9, static_cast<code_t>(top.obs_reg9_q)));
-  rom38_k.write(static_cast<code_t>(top.obs_rom38_k));
-  mul39_norm.write(arith::wrap(f.norm, static_cast<code_t>(top.obs_mul39_norm)));
+  // Only outputs whose bits changed go back to their pins (signed buses sign-extended
+  // from their width): a write per output and evaluation would cost as much as the
+  // evaluation itself (docs/performance.md).
+  Verilated::Outputs& was = v.outputs;
+  const bool all = !v.outputs_valid;
+  v.outputs_valid = true;
+  const auto update = [all](auto& last, auto now, auto write) {
+    if (all || now != last) {
+      last = now;
+      write(now);
+    }
+  };
+  update(was.pin24, top.pin24_r, [&](std::uint64_t x) { pin24_r.write(arith::wrap(F::out, static_cast<code_t>(x))); });
+  update(was.pin25, top.pin25_g, [&](std::uint64_t x) { pin25_g.write(arith::wrap(F::out, static_cast<code_t>(x))); });
+  update(was.pin26, top.pin26_b, [&](std::uint64_t x) { pin26_b.write(arith::wrap(F::out, static_cast<code_t>(x))); });
+  update(was.reg9, top.obs_reg9_q, [&](std::uint64_t x) { reg9_q.write(arith::wrap(F::reg9, static_cast<code_t>(x))); });
+  update(was.reg1, top.obs_reg1_q, [&](std::uint64_t x) { reg1_q.write(static_cast<code_t>(x)); });
+  update(was.rom38, top.obs_rom38_k, [&](std::uint64_t x) { rom38_k.write(static_cast<code_t>(x)); });
+  update(was.norm, top.obs_mul39_norm, [&](std::uint64_t x) { mul39_norm.write(arith::wrap(F::norm, static_cast<code_t>(x))); });
+  update(was.done35, top.pin35_done, [&](std::uint64_t x) { pin35_done.write(x != 0); });
+  update(was.select36, top.obs_select36, [&](std::uint64_t x) { select36.write(x != 0); });
+  update(was.q41, top.obs_q41, [&](std::uint64_t x) { q41.write(x != 0); });
+  update(was.q42, top.obs_q42, [&](std::uint64_t x) { q42.write(x != 0); });
+  update(was.nand45, top.obs_nand45, [&](std::uint64_t x) { nand45.write(x != 0); });
+}
+
+void RtlDevice::end_of_elaboration() {
+  // The pins' channels, read directly on the hot path (an sc_in read checks its binding
+  // every time).
+  rtl_->inputs = {pin17_cos.operator->(), pin18_n.operator->(), pin19_half.operator->(),
+                  pin20_one.operator->(), pin21_r.operator->(), pin22_g.operator->(),
+                  pin23_b.operator->(), pin27_start.operator->(), pin28_clk.operator->(),
+                  pin29_reset_n.operator->(), pin30_load_n.operator->(), pin31_load_r.operator->(),
+                  pin32_load_g.operator->(), pin33_load_b.operator->(), pin34_carry.operator->()};
+}
+
+void RtlDevice::before_end_of_elaboration() {
+  SPECULAR_HAS_PROCESS(RtlDevice);
+  // One process: every input pin changed in a delta reaches the model together (a
+  // strobe and its data, start and the clock keep their order at one instant), the
+  // model settles in one eval, and the outputs change one delta later. Pins 17, 18
+  // and 21–23 reach only the D inputs of registers 1, 2 and 10–12: their change alone
+  // changes no net, so it is read at the next evaluation (their strobe's edge) rather
+  // than evaluated on its own — except when tracing, where the waveform shows each pin
+  // when it changes. Declared here, once open_vcd() could have been called.
+  SC_METHOD(evaluate);
+  sensitive << pin19_half << pin20_one << pin27_start << pin28_clk << pin29_reset_n
+            << pin30_load_n << pin31_load_r << pin32_load_g << pin33_load_b << pin34_carry;
+  if (!vcd_path_.empty()) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
 }
 
 void RtlDevice::open_vcd(const std::string& path) {
+  if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
+    throw std::logic_error("RtlDevice::open_vcd must be called before the simulation starts");
   vcd_path_ = path;
   rtl_->context.traceEverOn(true);
 }

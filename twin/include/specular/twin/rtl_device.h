@@ -62,12 +62,11 @@ class RtlDevice : public sc_core::sc_module {
   /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw).
   void trace(sc_core::sc_trace_file*) const {}
   /// Trace every net of the RTL (pins, Fig. 1's buses, control unit 16) to `path`
-  /// from the start of simulation on. Call before sc_start.
+  /// from the start of simulation on. Call before sc_start (std::logic_error after).
   void open_vcd(const std::string& path);
 
   // ---- what the harness and the protocol checker watch (observation outputs) ----
   wire select36{"select36"};
-  wire write37{"write37"};
   wire q41{"q41"};
   wire q42{"q42"};
   wire nand45{"nand45"};
@@ -82,6 +81,8 @@ class RtlDevice : public sc_core::sc_module {
  private:
   struct Verilated;  // the verilated module and its typed signals (rtl_device.cpp)
 
+  void before_end_of_elaboration() override;
+  void end_of_elaboration() override;
   void start_of_simulation() override;
   void end_of_simulation() override;
   void evaluate();

@@ -1,0 +1,107 @@
+// The third implementation behind the TLM socket, `rtl` (the verilated RTL twin clocked
+// inside b_transport), against `lt`: the same bits in every register — pins 24–26,
+// register 1, register 9 after each pass, ROM 38, multiplier 39 — on random single
+// operations under each policy and on a sampled sweep through the batch window, and
+// the cycle count it annotates equals the spec's (2.5 periods for START, 2.5 + 2·(k − 1)
+// for a batch of k: SpecularTarget::latency_cycles), which is what `lt` annotates.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+#include "support/accuracy_sweep.h"
+#include "support/policies.h"
+#include "support/tlm_bench.h"
+
+namespace specular {
+namespace {
+
+using namespace tlm_testing;
+
+class TlmRtlRandom : public testing_support::PolicyTest {};
+
+TEST_P(TlmRtlRandom, SingleOperationsAgreeWithLtInEveryRegister) {
+  Config config;
+  config.normalisation = std::get<0>(GetParam());
+  config.saturation = std::get<1>(GetParam());
+  constexpr int operations = 2000;
+  int compared = 0;
+  run(
+      {Kind::lt, Kind::rtl},
+      [&](TlmBench& b) {
+        std::mt19937_64 random(20261125);
+        std::uniform_int_distribution<code_t> cos(0, 65536), n(1, 1000), rgb(0, 255);
+        Operands op;
+        for (int i = 0; i < operations; ++i) {
+          op.cos = i % 10 == 0 ? 65536 - i / 10 % 4 : cos(random);  // the last codes too
+          if (i % 7 != 0) op.n = n(random);  // else n and R, G, B stay: no operand writes
+          if (i % 7 != 0) op.rgb = {rgb(random), rgb(random), rgb(random)};
+          const Result lt = b[Kind::lt].driver.compute_inspected(op);
+          const Result rtl = b[Kind::rtl].driver.compute_inspected(op);
+          ASSERT_EQ(rtl.reg1, op.cos) << i;
+          ASSERT_EQ(rtl.reg9_pass1, lt.reg9_pass1) << i;
+          ASSERT_EQ(rtl.reg9_pass2, lt.reg9_pass2) << i;
+          ASSERT_EQ(rtl.rom38_k, lt.rom38_k) << i;
+          ASSERT_EQ(rtl.norm39, lt.norm39) << i;
+          ASSERT_EQ(rtl.out, lt.out) << i;
+          ++compared;
+        }
+      },
+      config);
+  EXPECT_EQ(compared, operations);
+}
+
+INSTANTIATE_TEST_SUITE_P(Policies, TlmRtlRandom, testing_support::every_policy(),
+                         testing_support::policy_name);
+
+// Every 9th n × 76 cos codes through BATCH_COS / BATCH_OUT: the streamed operations.
+TEST(TlmRtl, SampledSweepThroughTheBatchWindowEqualsLt) {
+  long compared = 0;
+  run({Kind::lt, Kind::rtl}, [&](TlmBench& b) {
+    const Formats f;
+    std::vector<std::uint32_t> cos;
+    for (const code_t c : testing_support::cos_codes(f, 1024)) cos.push_back(static_cast<std::uint32_t>(c));
+    std::vector<std::int32_t> lt(3 * cos.size()), rtl(3 * cos.size());
+    for (unsigned n = 1; n <= 1000; n += 9) {
+      const std::array<code_t, 3> rgb{255, 128 + n % 128, n % 256};
+      b[Kind::lt].driver.compute_batch(n, rgb, cos.data(), cos.size(), lt.data());
+      b[Kind::rtl].driver.compute_batch(n, rgb, cos.data(), cos.size(), rtl.data());
+      for (std::size_t i = 0; i < cos.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) {
+          ASSERT_EQ(rtl[3 * i + ch], lt[3 * i + ch]) << "cos code " << cos[i] << ", n " << n;
+          ++compared;
+        }
+    }
+  });
+  EXPECT_EQ(compared, 112 * 76 * 3);
+}
+
+// The annotation: START takes 2.5 periods of the twin's clock, a batch of k takes
+// 2.5 + 2·(k − 1): counted from the twin's clock edges, equal to the spec's table.
+TEST(TlmRtl, AnnotatesTheCyclesTheTwinTook) {
+  const sc_core::sc_time period(8, SC_NS);
+  run(
+      {Kind::rtl},
+      [&](TlmBench& b) {
+        Endpoint& e = b.at(0);
+        sc_core::sc_time annotated;
+        ASSERT_EQ(e.write(Reg::cos, 50000, &annotated), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(annotated, sc_core::SC_ZERO_TIME) << "register writes take no time";
+        ASSERT_EQ(e.write(Reg::control, control_bits::start, &annotated), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(annotated, period * 2.5);
+        for (std::uint32_t k : {1u, 2u, 10u, 256u}) {
+          std::vector<std::uint32_t> cos(k);
+          for (std::uint32_t i = 0; i < k; ++i) cos[i] = (i * 257) % 65537;
+          ASSERT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), cos.data(),
+                                4 * k, 0, nullptr, 0, &annotated),
+                    tlm::TLM_OK_RESPONSE);
+          EXPECT_EQ(annotated, period * (2.5 + 2.0 * (k - 1))) << "batch of " << k;
+        }
+      },
+      Config{}, period);
+}
+
+}  // namespace
+}  // namespace specular

@@ -1,8 +1,12 @@
 // The protocol checker (protocol_checker.h): every misuse of spec §3 "protocol" is
 // reported with its documented message type, and the legal, pipelined protocol of
-// PinHarness is not. Times are written against the spec's timing table, with the
+// PinHarness is not — on the SystemC netlist and on the RTL twin (typed tests: the
+// device reacts to each misuse as its gates do, and both devices' gates are Fig. 2's). Times are written against the spec's timing table, with the
 // harness clock rising at k·T (T = 10 ns) and a start at t0 on a rising edge.
 #include <gtest/gtest.h>
+
+#include <string>
+#include <type_traits>
 
 #include "specular/core.h"
 #include "support/protocol_bench.h"
@@ -12,11 +16,23 @@ namespace {
 
 using namespace protocol_testing;
 
+template <class Harness>
+class ProtocolChecker : public ::testing::Test {};
+class DeviceNames {
+ public:
+  template <class Harness>
+  static std::string GetName(int) {
+    return std::is_same_v<Harness, PinHarness> ? "netlist" : "rtl";
+  }
+};
+using Devices = ::testing::Types<PinHarness, RtlHarness>;
+TYPED_TEST_SUITE(ProtocolChecker, Devices, DeviceNames);
+
 Operands operands(double cos, long long n, long long r, long long g, long long b) {
   return Core(Config{}).operands(cos, n, r, g, b);
 }
 
-TEST(ProtocolChecker, LegalPipelinedProtocolIsSilent) {
+TYPED_TEST(ProtocolChecker, LegalPipelinedProtocolIsSilent) {
   const Config config;
   std::vector<Operands> in;
   // Runs of unchanged n/RGB (starts every 2 T) and changes (3 T, reload after 35 rose).
@@ -24,7 +40,7 @@ TEST(ProtocolChecker, LegalPipelinedProtocolIsSilent) {
     in.push_back(operands(0.5 + 0.0123 * i, i < 20 ? 8 : 8 + i / 5, 200, 100 + (i / 7), 50));
   std::vector<Result> out;
   const Operands off_phase = operands(0.93, 40, 10, 20, 30);
-  ProtocolBench& bench = run_scenario(config, [&](ProtocolBench& b) {
+  auto& bench = run_scenario<TypeParam>(config, [&](ProtocolBenchT<TypeParam>& b) {
     b.harness.reset();
     b.harness.run_batch(in, out);
     // A start at another phase (0.3 T after a rising edge), 2 T after the previous
@@ -43,11 +59,11 @@ TEST(ProtocolChecker, LegalPipelinedProtocolIsSilent) {
   EXPECT_EQ(bench.dut().protocol_checker.in_flight(), 0u);
 }
 
-TEST(ProtocolChecker, StartWhilePassOneIsPendingIsReportedAndTheEdgeIsLost) {
+TYPED_TEST(ProtocolChecker, StartWhilePassOneIsPendingIsReportedAndTheEdgeIsLost) {
   const Config config;
   const Operands op = operands(0.8, 20, 255, 128, 7);
   std::vector<sc_time> t0s;
-  ProtocolBench& bench = run_scenario(config, [&](ProtocolBench& b) {
+  auto& bench = run_scenario<TypeParam>(config, [&](ProtocolBenchT<TypeParam>& b) {
     b.harness.reset();
     const sc_time T = b.period();
     // Second start at: t0 + T/4 (Q41 set), t0 + T (Q42 set), t0 + 1.25 T (NAND 45
@@ -74,12 +90,12 @@ TEST(ProtocolChecker, StartWhilePassOneIsPendingIsReportedAndTheEdgeIsLost) {
   }
 }
 
-TEST(ProtocolChecker, StartLessThanTwoPeriodsAfterThePreviousIsReported) {
+TYPED_TEST(ProtocolChecker, StartLessThanTwoPeriodsAfterThePreviousIsReported) {
   const Config config;
   const Operands first = operands(0.9, 30, 100, 100, 100);
   const Operands second = operands(0.95, 30, 100, 100, 100);
   sc_time t0;
-  ProtocolBench& bench = run_scenario(config, [&](ProtocolBench& b) {
+  auto& bench = run_scenario<TypeParam>(config, [&](ProtocolBenchT<TypeParam>& b) {
     b.harness.reset();
     const sc_time T = b.period();
     t0 = b.rising_edge_from(sc_core::sc_time_stamp() + T);
@@ -100,8 +116,8 @@ TEST(ProtocolChecker, StartLessThanTwoPeriodsAfterThePreviousIsReported) {
   expect_matches_reference(config, second, bench.done[1].pins);
 }
 
-TEST(ProtocolChecker, StartAtAFallingClockEdgeIsReported) {
-  ProtocolBench& bench = run_scenario(Config{}, [&](ProtocolBench& b) {
+TYPED_TEST(ProtocolChecker, StartAtAFallingClockEdgeIsReported) {
+  auto& bench = run_scenario<TypeParam>(Config{}, [&](ProtocolBenchT<TypeParam>& b) {
     b.harness.reset();
     const sc_time T = b.period();
     const sc_time t0 = b.rising_edge_from(sc_core::sc_time_stamp() + T);
@@ -114,8 +130,8 @@ TEST(ProtocolChecker, StartAtAFallingClockEdgeIsReported) {
   EXPECT_EQ(bench.dut().protocol_checker.in_flight(), 0u);
 }
 
-TEST(ProtocolChecker, StartDuringResetIsReportedAndIgnored) {
-  ProtocolBench& bench = run_scenario(Config{}, [&](ProtocolBench& b) {
+TYPED_TEST(ProtocolChecker, StartDuringResetIsReportedAndIgnored) {
+  auto& bench = run_scenario<TypeParam>(Config{}, [&](ProtocolBenchT<TypeParam>& b) {
     const sc_time T = b.period();
     b.at(T + T / 4);
     b.harness.pin29_reset_n.write(false);
@@ -130,11 +146,11 @@ TEST(ProtocolChecker, StartDuringResetIsReportedAndIgnored) {
   EXPECT_TRUE(bench.done.empty()) << "no operation ran";
 }
 
-TEST(ProtocolChecker, RegisterWritesBetweenStartAndDoneAreReported) {
+TYPED_TEST(ProtocolChecker, RegisterWritesBetweenStartAndDoneAreReported) {
   const Config config;
   const Operands op = operands(0.85, 12, 90, 80, 70);
   const Operands reloaded = operands(0.6, 3, 200, 210, 220);
-  ProtocolBench& bench = run_scenario(config, [&](ProtocolBench& b) {
+  auto& bench = run_scenario<TypeParam>(config, [&](ProtocolBenchT<TypeParam>& b) {
     b.harness.reset();
     const sc_time T = b.period();
     sc_time t0 = b.rising_edge_from(sc_core::sc_time_stamp() + T);
@@ -168,7 +184,7 @@ TEST(ProtocolChecker, RegisterWritesBetweenStartAndDoneAreReported) {
   expect_matches_reference(config, reloaded, bench.done[2].pins);
 }
 
-TEST(ProtocolChecker, MisuseCanBeRaisedToAnErrorOrFiltered) {
+TYPED_TEST(ProtocolChecker, MisuseCanBeRaisedToAnErrorOrFiltered) {
 #if defined(__SANITIZE_ADDRESS__)
   // The sc_report thrown on a QuickThreads stack of Debian's libsystemc (built without
   // ASan's fiber annotations) trips ASan's no-return handler: a known false positive.
@@ -180,7 +196,7 @@ TEST(ProtocolChecker, MisuseCanBeRaisedToAnErrorOrFiltered) {
   sc_core::sc_report_handler::set_actions(report::start_too_soon, sc_core::SC_DO_NOTHING);
   bool reached_busy_start = false;
   try {
-    run_scenario(Config{}, [&](ProtocolBench& b) {
+    run_scenario<TypeParam>(Config{}, [&](ProtocolBenchT<TypeParam>& b) {
       b.harness.reset();
       const sc_time T = b.period();
       const sc_time t0 = b.rising_edge_from(sc_core::sc_time_stamp() + T);

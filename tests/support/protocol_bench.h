@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "specular/pin_harness.h"
+#include "specular/twin/rtl_device.h"
 #include "specular/reference.h"
 #include "specular/report_ids.h"
 
@@ -30,30 +31,33 @@ inline int protocol_reports() {
   return total;
 }
 
-class ProtocolBench : public sc_core::sc_module {
+/// Generic over the harness: PinHarness (the SystemC netlist) or RtlHarness (the
+/// RTL twin), so that the misuse tests run against both devices.
+template <class Harness>
+class ProtocolBenchT : public sc_core::sc_module {
  public:
-  using Scenario = std::function<void(ProtocolBench&)>;
+  using Scenario = std::function<void(ProtocolBenchT&)>;
 
   struct Done {
     sc_time time;
     Result pins;  ///< register 9, ROM 38, multiplier 39, pins 24–26 at the rising edge of 35
   };
 
-  ProtocolBench(sc_core::sc_module_name name, const Config& config, Scenario scenario,
+  ProtocolBenchT(sc_core::sc_module_name name, const Config& config, Scenario scenario,
                 const sc_time& period = sc_time(10, SC_NS))
       : sc_module(name), harness("harness", config, period), scenario_(std::move(scenario)) {
-    SPECULAR_HAS_PROCESS(ProtocolBench);
+    SPECULAR_HAS_PROCESS(ProtocolBenchT);
     SC_THREAD(run);
     SC_METHOD(on_done);
     sensitive << harness.pin35_done.posedge_event();
     dont_initialize();
   }
 
-  PinHarness harness;
+  Harness harness;
   std::vector<Done> done;  ///< every rising edge of 35, in order
 
   const sc_time& period() const { return harness.clock_period(); }
-  SpecularDevice& dut() { return harness.dut; }
+  auto& dut() { return harness.dut; }
 
   /// Wait until absolute time `when` (no-op if it has passed).
   void at(const sc_time& when) {
@@ -127,11 +131,16 @@ class ProtocolBench : public sc_core::sc_module {
   Scenario scenario_;
 };
 
+using ProtocolBench = ProtocolBenchT<PinHarness>;
+using RtlProtocolBench = ProtocolBenchT<RtlHarness>;
+
 /// Elaborate a bench, run the scenario to its end, and return the bench for checks.
 /// (One elaboration per test process: call once per TEST.)
-inline ProtocolBench& run_scenario(const Config& config, ProtocolBench::Scenario scenario) {
-  static ProtocolBench* bench = nullptr;  // lives until the process ends, as SystemC wants
-  bench = new ProtocolBench("bench", config, std::move(scenario));
+template <class Harness = PinHarness>
+ProtocolBenchT<Harness>& run_scenario(const Config& config,
+                                      typename ProtocolBenchT<Harness>::Scenario scenario) {
+  static ProtocolBenchT<Harness>* bench = nullptr;  // lives until the process ends, as SystemC wants
+  bench = new ProtocolBenchT<Harness>("bench", config, std::move(scenario));
   sc_core::sc_start();
   return *bench;
 }

@@ -19,6 +19,10 @@ set -euo pipefail
 #   gnuplot-nox                         quick plots from the testbench's CSV output
 #   clang-14, libclang-rt-14-dev        scripts/fuzz.sh: libFuzzer and clang's sanitizer
 #                                       runtimes (libclang_rt.fuzzer, asan, ubsan)
+#   verilator, iverilog, yosys          the RTL twin (rtl/, twin/, docs/rtl.md): Verilator
+#                                       5.006 compiles it into C++ models, Icarus Verilog 11
+#                                       runs its Verilog testbench, Yosys 0.23 lints and
+#                                       synthesises it (scripts/synth.sh)
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev
@@ -28,6 +32,7 @@ PACKAGES=(
   python3-numpy python3-matplotlib
   gnuplot-nox
   clang-14 libclang-rt-14-dev
+  verilator iverilog yosys
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

@@ -6,7 +6,7 @@
 
 #include <verilated.h>
 
-#include "Vspecular_device_cc.h"
+#include "Vspecular_device_fast.h"
 #include "Vspecular_device_w20.h"
 #include "specular/arith.h"
 
@@ -188,7 +188,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
 RtlCycleModel::RtlCycleModel(const Config& config) : config_(config) {
   const Formats formats(config.widths);
   if (same_widths(config.widths, Widths{}))
-    engine_ = std::make_unique<VerilatedEngine<Vspecular_device_cc>>(config, formats);
+    engine_ = std::make_unique<VerilatedEngine<Vspecular_device_fast>>(config, formats);
   else if (same_widths(config.widths, rtl_alternate_widths()))
     engine_ = std::make_unique<VerilatedEngine<Vspecular_device_w20>>(config, formats);
   else

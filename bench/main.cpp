@@ -1,7 +1,11 @@
 // specular_bench: how fast each model of the device runs, as results per second and
 // as a ratio to std::pow(c, n) in double measured in the same run.
 //
-//   specular_bench [--all] [--quick]     every model, each in its own child process
+//   specular_bench [--all] [--quick] [--repetitions N]
+//                                        every model, each in its own child process, N
+//                                        interleaved repetitions (default 5; --quick 1):
+//                                        every figure as median [min..max], every target
+//                                        met, not met or within noise (summary.h)
 //   specular_bench --model NAME [...]    one model in this process (what a child runs)
 //   specular_bench --list                the model names
 //
@@ -20,6 +24,7 @@
 #include <vector>
 
 #include "bench.h"
+#include "summary.h"
 #include "specular/systemc.h"
 
 namespace specular_bench {
@@ -141,12 +146,24 @@ std::size_t parse_count(const std::string& option, const std::string& text) {
   return static_cast<std::size_t>(value);
 }
 
-/// Runs one child (`specular_bench --model NAME ...`), echoes its lines and keeps its
-/// figures. Returns false when the child failed.
-bool run_child(const std::vector<std::string>& args, std::map<std::string, double>& figures,
-               std::map<std::string, std::string>& texts) {
+/// One figure line of a child: `name: value unit` (value's text kept for checksums).
+struct Figure {
+  double value = 0;
+  std::string text;
+  std::string unit;
+};
+/// One repetition's figures, by name.
+using Round = std::map<std::string, Figure>;
+
+/// Runs one child (`specular_bench --model NAME ...`) and keeps its figures in `round`
+/// (`order` gets every name the first time it is seen). Lines that are not figures
+/// (SystemC's reports, errors) are echoed as notes tagged with `tag`. Returns false
+/// when the child failed.
+bool run_child(const std::vector<std::string>& args, const std::string& tag, Round& round,
+               std::vector<std::string>& order) {
   int pipe_fds[2];
   if (::pipe(pipe_fds) != 0) return false;
+  std::fflush(stdout);
   const pid_t pid = ::fork();
   if (pid < 0) return false;
   if (pid == 0) {
@@ -165,17 +182,22 @@ bool run_child(const std::vector<std::string>& args, std::map<std::string, doubl
   char buffer[512];
   while (std::fgets(buffer, sizeof buffer, from_child) != nullptr) {
     std::string line(buffer);
-    std::fputs(line.c_str(), stdout);
-    std::fflush(stdout);
+    if (!line.empty() && line.back() == '\n') line.pop_back();
     const std::size_t colon = line.find(": ");
-    if (colon == std::string::npos || colon == 0) continue;
-    const std::string name = line.substr(0, colon);
+    const std::string name = colon == std::string::npos ? "" : line.substr(0, colon);
     // Figure names are lower-case identifiers; anything else (SystemC's reports) is text.
-    if (name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos)
+    if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyz0123456789_") != std::string::npos) {
+      std::printf("# %s: %s\n", tag.c_str(), line.c_str());
       continue;
+    }
     const std::string rest = line.substr(colon + 2);
-    texts[name] = rest.substr(0, rest.find(' '));
-    figures[name] = std::strtod(rest.c_str(), nullptr);
+    const std::size_t space = rest.find(' ');
+    Figure f;
+    f.text = rest.substr(0, space);
+    f.unit = space == std::string::npos ? "" : rest.substr(space + 1);
+    f.value = std::strtod(rest.c_str(), nullptr);
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+    round[name] = f;
   }
   std::fclose(from_child);
   int status = 0;
@@ -183,96 +205,163 @@ bool run_child(const std::vector<std::string>& args, std::map<std::string, doubl
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-int run_all(bool quick, std::uint64_t seed, const std::string& vcd_stem) {
-  std::printf("# specular_bench%s: seed %llu, every model in its own process\n",
-              quick ? " --quick (smoke test: too few operations for stable figures)" : "",
-              static_cast<unsigned long long>(seed));
-  std::map<std::string, double> figures;
-  std::map<std::string, std::string> texts;
-  std::vector<std::string> failed;
-  for (const Model& m : models()) {
-    const std::size_t ops = quick ? m.quick_ops : m.full_ops;
-    const int reps = quick ? 1 : m.repetitions;
-    std::printf("# %s: %s; %zu operations, best of %d\n", m.name.c_str(), m.what.c_str(), ops, reps);
-    std::fflush(stdout);
-    if (!run_child({"specular_bench", "--model", m.name, "--ops", std::to_string(ops), "--reps",
-                    std::to_string(reps), "--seed", std::to_string(seed), "--verify",
-                    std::to_string(verify_ops), "--vcd", vcd_stem},
-                   figures, texts))
-      failed.push_back(m.name);
-  }
-
-  // Ratios to the yardstick, measured in this run: the faster of its two runs.
-  std::printf("# ratios to std::pow measured in this run (the faster of pow and pow_end)\n");
-  const double pow_rate = std::max(figures["pow_rate"], figures["pow_end_rate"]);
-  print_figure("pow_yardstick_rate", pow_rate, "Mevals/s");
-  for (const Model& m : models()) {
-    if (m.name == "pow" || !m.ratio || figures.count(m.name + "_rate") == 0 || pow_rate <= 0)
-      continue;
-    print_figure(m.name + "_vs_pow", figures[m.name + "_rate"] / pow_rate, "x");
-  }
-  if (figures.count("pin_vcd_on_rate") != 0 && figures["pin_vcd_on_rate"] > 0)
-    print_figure("vcd_slowdown", figures["pin_vcd_off_rate"] / figures["pin_vcd_on_rate"], "x");
-  if (figures.count("pin_vcd_real_views_rate") != 0 && figures["pin_vcd_real_views_rate"] > 0)
-    print_figure("vcd_real_views_slowdown",
-                 figures["pin_vcd_off_rate"] / figures["pin_vcd_real_views_rate"], "x");
-
-  // The issue's targets (docs/performance.md); reported, never a failure: a busy
-  // machine slows models and yardstick differently.
-  std::printf("# targets of issue 6 (1 met, 0 not met)\n");
-  const auto met = [&](const std::string& figure, bool at_least, double bound) {
-    const bool slowdown = figure == "vcd_slowdown";
-    const std::string rate = slowdown ? "pin_vcd_on_rate" : figure + "_rate";
-    if (figures.count(rate) == 0 || figures[rate] <= 0 || pow_rate <= 0) return;
-    const double value = slowdown ? figures["pin_vcd_off_rate"] / figures[rate] : figures[rate] / pow_rate;
-    print_figure("target_" + figure, (at_least ? value >= bound : value <= bound) ? 1 : 0, "bool");
+/// The performance targets (docs/performance.md), each named by the figure it judges.
+const std::vector<Target>& targets() {
+  static const std::vector<Target> all = {
+      {"core_vs_pow", true, 3.0, "bit-accurate core, results/s over std::pow's"},
+      {"tlm_lt_quantum_vs_pow", true, 0.25, "TLM lt target, 1 us quantum, over std::pow"},
+      {"tlm_lt_batch_vs_pow", true, 0.7, "TLM lt target, BATCH_COS bursts, over std::pow"},
+      // The issue's figure: n, R, G, B change every result (3 T) ...
+      {"pin_vcd_off_vs_pow", true, 0.01, "pin-level device, new n/RGB every result (3 T), over std::pow"},
+      // ... and beside it one material streaming at 2 T.
+      {"pin_stream_vs_pow", true, 0.01, "pin-level device, n/RGB held per 256 results (2 T), over std::pow"},
+      {"vcd_slowdown", false, 6.0, "pin-level device without VCD over with VCD (how much slower tracing is)"},
   };
-  met("core", true, 3.0);
-  met("tlm_lt_quantum", true, 0.25);
-  met("pin_vcd_off", true, 0.01);  // the issue's figure: n, R, G, B change every result (3 T)
-  met("pin_stream", true, 0.01);   // shown beside it: one material streams at 2 T
-  met("vcd_slowdown", false, 6.0);
-  met("tlm_lt_batch", true, 0.7);
-  // The RTL twin (docs/rtl.md): under the harness at least 2x the netlist, and the
-  // plain C++ model at least 10 M results/s.
-  if (figures.count("rtl_vcd_off_rate") != 0 && figures["pin_vcd_off_rate"] > 0) {
-    print_figure("rtl_vs_pin", figures["rtl_vcd_off_rate"] / figures["pin_vcd_off_rate"], "x");
-    print_figure("rtl_stream_vs_pin_stream", figures["rtl_stream_rate"] / figures["pin_stream_rate"], "x");
-    print_figure("floor_vs_pin", figures["floor_vcd_off_rate"] / figures["pin_vcd_off_rate"], "x");
-    print_figure("target_rtl_vs_pin", figures["rtl_vcd_off_rate"] >= 2 * figures["pin_vcd_off_rate"] ? 1 : 0, "bool");
-  }
-  if (figures.count("rtl_cpp_rate") != 0)
-    print_figure("target_rtl_cpp", figures["rtl_cpp_rate"] >= 10.0 ? 1 : 0, "bool");
+   return all;
+}
 
-  // Every model must give the core's results to the bit on the same inputs.
-  bool exact = texts.count("core_checksum") != 0;
+/// The figures the parent derives from one repetition's children: the yardstick (the
+/// faster of that repetition's pow and pow_end), every ratio to it, the VCD's cost.
+void add_ratios(Round& round, std::vector<std::string>& order) {
+  const auto add = [&](const std::string& name, double value, const std::string& unit) {
+    if (std::find(order.begin(), order.end(), name) == order.end()) order.push_back(name);
+    round[name] = Figure{value, "", unit};
+  };
+  const auto rate = [&](const std::string& name) {
+    const auto it = round.find(name + "_rate");
+    return it == round.end() ? 0.0 : it->second.value;
+  };
+  const double pow_rate = std::max(rate("pow"), rate("pow_end"));
+  if (pow_rate <= 0) return;
+  add("pow_yardstick_rate", pow_rate, "Mevals/s");
+  for (const Model& m : models())
+    if (m.name != "pow" && m.ratio && rate(m.name) > 0) add(m.name + "_vs_pow", rate(m.name) / pow_rate, "x");
+  if (rate("pin_vcd_on") > 0) add("vcd_slowdown", rate("pin_vcd_off") / rate("pin_vcd_on"), "x");
+  if (rate("pin_vcd_real_views") > 0)
+    add("vcd_real_views_slowdown", rate("pin_vcd_off") / rate("pin_vcd_real_views"), "x");
+  // The RTL twin and the harness's floor against the netlist, under the same harness.
+  if (rate("pin_vcd_off") > 0 && rate("rtl_vcd_off") > 0) {
+    add("rtl_vs_pin", rate("rtl_vcd_off") / rate("pin_vcd_off"), "x");
+    add("floor_vs_pin", rate("floor_vcd_off") / rate("pin_vcd_off"), "x");
+  }
+  if (rate("pin_stream") > 0 && rate("rtl_stream") > 0) {
+    add("rtl_stream_vs_pin_stream", rate("rtl_stream") / rate("pin_stream"), "x");
+    add("floor_stream_vs_pin_stream", rate("floor_stream") / rate("pin_stream"), "x");
+  }
+}
+
+/// Every model gives the core's results to the bit on the same inputs (in one repetition).
+bool bit_exact(const Round& round, bool quick) {
+  const auto core = round.find("core_checksum");
+  const auto stream = round.find("core_stream_checksum");
+  if (core == round.end() || stream == round.end()) return false;
+  bool exact = true;
   for (const Model& m : models()) {
     if (m.name == "pow" || m.name == "pow_end" || m.name == "core") continue;
     if (m.name.rfind("floor_", 0) == 0) continue;  // computes nothing, by design
-    const bool stream = m.name.find("_stream") != std::string::npos ||
-                        m.name.find("_batch") != std::string::npos;
-    const std::string reference = stream ? "core_stream_checksum" : "core_checksum";
-    const auto it = texts.find(m.name + "_checksum");
+    const bool streamed = m.name.find("_stream") != std::string::npos ||
+                          m.name.find("_batch") != std::string::npos;
+    const auto it = round.find(m.name + "_checksum");
     // A growth run shorter than the shared prefix hashes fewer results: not comparable.
-    if (it == texts.end() || (quick ? m.quick_ops : m.full_ops) < verify_ops) continue;
-    if (it->second != texts[reference]) {
+    if (it == round.end() || (quick ? m.quick_ops : m.full_ops) < verify_ops) continue;
+    if (it->second.text != (streamed ? stream : core)->second.text) {
       std::printf("# %s differs from the core on the first %zu results\n", m.name.c_str(), verify_ops);
       exact = false;
     }
   }
-  print_figure("bit_exact", exact ? 1 : 0, "bool");
+  return exact;
+}
 
+/// `name: median unit [min..max]`; a bool holds only if it held in every repetition,
+/// a checksum is printed when every repetition gave the same one.
+void print_summary(const std::string& name, const std::vector<Figure>& samples) {
+  const std::string& unit = samples.front().unit;
+  if (unit == "hex") {
+    bool same = true;
+    for (const Figure& f : samples) same = same && f.text == samples.front().text;
+    std::printf("%s: %s hex%s\n", name.c_str(), same ? samples.front().text.c_str() : "differs",
+                same ? "" : " (between repetitions)");
+    return;
+  }
+  std::vector<double> values;
+  for (const Figure& f : samples) values.push_back(f.value);
+  const Spread s = spread_of(values);
+  if (unit == "bool") {
+    std::printf("%s: %d bool\n", name.c_str(), s.min != 0 ? 1 : 0);
+    return;
+  }
+  std::printf("%s: %.4g %s [%.4g..%.4g]\n", name.c_str(), s.median, unit.c_str(), s.min, s.max);
+}
+
+int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& vcd_stem) {
+  std::printf("# specular_bench%s: seed %llu, every model in its own process, %d interleaved repetition%s\n",
+              quick ? " --quick (smoke test: too few operations for stable figures)" : "",
+              static_cast<unsigned long long>(seed), repetitions, repetitions == 1 ? "" : "s");
+  std::printf("# a repetition runs every model once, in this order (best of N: timed N times in its process):\n");
+  for (const Model& m : models())
+    std::printf("#   %s: %s; %zu operations, best of %d\n", m.name.c_str(), m.what.c_str(),
+                quick ? m.quick_ops : m.full_ops, quick ? 1 : m.repetitions);
+  std::fflush(stdout);
+
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<Figure>> samples;
+  std::vector<std::string> failed;
+  bool exact = true;
+  for (int rep = 1; rep <= repetitions; ++rep) {
+    std::printf("# repetition %d of %d\n", rep, repetitions);
+    std::fflush(stdout);
+    Round round;
+    for (const Model& m : models()) {
+      const std::size_t ops = quick ? m.quick_ops : m.full_ops;
+      const int reps = quick ? 1 : m.repetitions;
+      if (!run_child({"specular_bench", "--model", m.name, "--ops", std::to_string(ops), "--reps",
+                      std::to_string(reps), "--seed", std::to_string(seed), "--verify",
+                      std::to_string(verify_ops), "--vcd", vcd_stem},
+                     m.name + " (repetition " + std::to_string(rep) + ")", round, order))
+        failed.push_back(m.name + " (repetition " + std::to_string(rep) + ")");
+    }
+    add_ratios(round, order);
+    exact = bit_exact(round, quick) && exact;
+    for (const auto& [name, figure] : round) samples[name].push_back(figure);
+  }
+
+  std::printf("# figures: name: median unit [min..max] over the %d repetitions; ratios to std::pow use\n"
+              "# each repetition's own yardstick (the faster of its pow and pow_end)\n",
+              repetitions);
+  for (const std::string& name : order) print_summary(name, samples[name]);
+
+  // Reported, never a failure: a busy machine slows models and yardstick differently.
+  std::printf("# targets: target_<figure>: verdict (median [min..max], bound). Verdicts: met = every\n"
+              "# repetition meets the bound; not met = none does; within noise = the spread straddles it\n");
+  VerdictCount count;
+  for (const Target& t : targets()) {
+    const auto it = samples.find(t.figure);
+    if (it == samples.end()) continue;
+    std::vector<double> values;
+    for (const Figure& f : it->second) values.push_back(f.value);
+    const Spread s = spread_of(values);
+    const Verdict v = judge(s, t.at_least, t.bound);
+    count.add(v);
+    std::printf("target_%s: %s (%.4g x [%.4g..%.4g], bound %s %g x: %s)\n", t.figure.c_str(), to_string(v),
+                s.median, s.min, s.max, t.at_least ? ">=" : "<=", t.bound, t.what.c_str());
+  }
+  std::printf("targets_met: %d of %d (%d not met, %d within noise)\n", count.met, count.total(),
+              count.not_met, count.within_noise);
+
+  print_figure("bit_exact", exact ? 1 : 0, "bool");
   for (const std::string& name : failed) std::printf("# FAILED: %s\n", name.c_str());
   return failed.empty() && exact ? 0 : 1;
 }
 
 void usage(std::ostream& out) {
-  out << "usage: specular_bench [--all] [--quick] [--seed N] [--vcd STEM]\n"
+  out << "usage: specular_bench [--all] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
          "       specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"
          "       specular_bench --list\n"
          "Prints one `name: value unit` line per figure. --all (the default) runs every\n"
          "model in its own child process and adds the ratios to std::pow; --quick is a\n"
-         "smoke test with few operations. --vcd STEM: where the traced model writes\n"
+         "smoke test with few operations. --repetitions N (1..100; default 5, --quick 1):\n"
+         "every model runs N times, interleaved, and each figure is printed as its median\n"
+         "[min..max]; a target is met, not met or within noise. --vcd STEM: where the traced model writes\n"
          "STEM.vcd (deleted after measuring its size unless --keep-vcd).\n";
 }
 
@@ -281,6 +370,7 @@ int bench_main(int argc, char** argv) {
   bool quick = false, list = false;
   Plan plan;
   std::size_t ops = 0;
+  int repetitions = 0;  // 0: the default, 5 (1 with --quick)
   plan.vcd_path = std::string(std::getenv("TMPDIR") != nullptr ? std::getenv("TMPDIR") : "/tmp") +
                   "/specular_bench_" + std::to_string(::getpid());
   for (int i = 1; i < argc; ++i) {
@@ -294,7 +384,17 @@ int bench_main(int argc, char** argv) {
     else if (arg == "--list") list = true;
     else if (arg == "--model") model = value();
     else if (arg == "--ops") ops = parse_count(arg, value());
-    else if (arg == "--reps") plan.repetitions = static_cast<int>(parse_count(arg, value()));
+    else if (arg == "--repetitions") {
+      const std::string text = value();
+      std::size_t n = 0;
+      try {
+        n = parse_count(arg, text);
+      } catch (const std::invalid_argument&) {
+        n = 0;
+      }
+      if (n == 0 || n > 100) throw std::invalid_argument(arg + " " + text + ": expected an integer in 1..100");
+      repetitions = static_cast<int>(n);
+    } else if (arg == "--reps") plan.repetitions = static_cast<int>(parse_count(arg, value()));
     else if (arg == "--seed") plan.seed = parse_count(arg, value());
     else if (arg == "--verify") plan.verify_ops = parse_count(arg, value());
     else if (arg == "--vcd") plan.vcd_path = value();
@@ -306,7 +406,8 @@ int bench_main(int argc, char** argv) {
     for (const Model& m : models()) std::cout << m.name << ": " << m.what << "\n";
     return 0;
   }
-  if (model.empty()) return run_all(quick, plan.seed, plan.vcd_path);
+  if (model.empty())
+    return run_all(quick, repetitions != 0 ? repetitions : (quick ? 1 : 5), plan.seed, plan.vcd_path);
 
   const Model* m = find_model(model);
   if (m == nullptr) {

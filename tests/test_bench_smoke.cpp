@@ -1,5 +1,8 @@
 // specular_bench --quick as a smoke test: it runs every model in its own process,
-// exits 0, prints every figure the issue asks for and finds every model bit-exact.
+// exits 0, prints every figure the issue asks for and finds every model bit-exact;
+// with two repetitions, every figure as median [min..max] and every target with a
+// verdict and a count that agrees with the verdicts (issue 12). The verdict itself is
+// a pure function (bench/summary.h), checked here on made-up figures.
 // Speed is never asserted (a shared machine may be slow); only presence and exactness.
 #include <gtest/gtest.h>
 
@@ -7,9 +10,15 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <map>
+#include <regex>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+
+#include "support/scratch.h"
+#include "summary.h"  // bench/summary.h
 
 namespace {
 
@@ -46,7 +55,8 @@ const std::string bench = std::string(SPECULAR_BINARY_DIR) + "/bench/specular_be
 
 TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
   ASSERT_TRUE(std::filesystem::exists(bench)) << bench << " is missing: build target specular_bench";
-  const CommandRun r = run_command(bench + " --quick --vcd " + testing::TempDir() + "bench_smoke 2>&1");
+  const CommandRun r = run_command(bench + " --quick --repetitions 2 --vcd '" +
+                                   specular::testing_support::scratch_file("bench_smoke").string() + "' 2>&1");
   EXPECT_EQ(r.exit_status, 0) << r.output;
   const std::set<std::string> names = figure_names(r.output);
 
@@ -65,13 +75,115 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
   for (const char* figure : {"pow_yardstick_rate", "vcd_slowdown", "vcd_real_views_slowdown",
                              "pin_vcd_on_bytes_per_result", "pin_vcd_real_views_bytes_per_result",
                              "vcd_growth_10k_bytes_per_result", "pin_vcd_off_cycles_per_result",
-                             "pin_stream_cycles_per_result", "core_default_formats", "target_core",
-                             "target_tlm_lt_quantum", "target_pin_vcd_off", "target_pin_stream",
-                             "target_vcd_slowdown", "target_tlm_lt_batch", "bit_exact"})
+                             "pin_stream_cycles_per_result", "core_default_formats", "target_core_vs_pow",
+                             "target_tlm_lt_quantum_vs_pow", "target_pin_vcd_off_vs_pow",
+                             "target_pin_stream_vs_pow", "target_vcd_slowdown", "target_tlm_lt_batch_vs_pow",
+                             "targets_met", "bit_exact"})
     EXPECT_EQ(names.count(figure), 1u) << figure;
+
+  // Shape: every measured figure is `name: median unit [min..max]` with min <= median <= max,
+  // each name once (repetitions are summarised, not listed).
+  const std::regex figure_line(R"(^([a-z0-9_]+): ([-0-9.e+]+) (\S+) \[([-0-9.e+]+)\.\.([-0-9.e+]+)\]$)");
+  const std::regex target_line(R"(^target_[a-z0-9_]+: (met|not met|within noise) \(.*\)$)");
+  std::map<std::string, int> verdicts;
+  int figure_lines = 0;
+  std::istringstream lines(r.output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::smatch m;
+    if (std::regex_match(line, m, target_line)) {
+      ++verdicts[m[1]];
+    } else if (std::regex_match(line, m, figure_line)) {
+      ++figure_lines;
+      const double median = std::stod(m[2]), low = std::stod(m[4]), high = std::stod(m[5]);
+      EXPECT_LE(low, median) << line;
+      EXPECT_LE(median, high) << line;
+    } else {
+      // The rest: checksums (hex), bools, and the count of the targets' verdicts.
+      EXPECT_TRUE(line.find(" hex") != std::string::npos || line.find(" bool") != std::string::npos ||
+                  line.rfind("targets_met: ", 0) == 0)
+          << "a line of no known shape: " << line;
+    }
+  }
+  EXPECT_GT(figure_lines, 50);
+  // The count is the verdicts' count: "targets_met: M of T (N not met, W within noise)".
+  const std::string count = "\ntargets_met: " + std::to_string(verdicts["met"]) + " of 6 (" +
+                            std::to_string(verdicts["not met"]) + " not met, " +
+                            std::to_string(verdicts["within noise"]) + " within noise)\n";
+  EXPECT_EQ(verdicts["met"] + verdicts["not met"] + verdicts["within noise"], 6) << r.output;
+  EXPECT_NE(r.output.find(count), std::string::npos) << count << r.output;
+  EXPECT_NE(r.output.find("2 interleaved repetitions"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("issue 6"), std::string::npos) << "targets are named by what they measure";
   EXPECT_NE(r.output.find("\nbit_exact: 1 bool\n"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("\ncore_default_formats: 1 bool\n"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("FAILED"), std::string::npos) << r.output;
+}
+
+TEST(BenchSmoke, RepetitionsOutOfRangeAreRefusedWithTheRange) {
+  ASSERT_TRUE(std::filesystem::exists(bench)) << bench << " is missing: build target specular_bench";
+  for (const char* bad : {"0", "101", "five", "-3"}) {
+    const CommandRun r = run_command(bench + " --repetitions " + bad + " 2>&1");
+    EXPECT_EQ(r.exit_status, 2) << bad;
+    EXPECT_NE(r.output.find(std::string("--repetitions ") + bad), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("1..100"), std::string::npos) << r.output;
+  }
+}
+
+// The summary of repetitions: median (mean of the middle two for an even count), min, max.
+TEST(BenchSummary, SpreadIsMedianMinAndMax) {
+  using specular_bench::spread_of;
+  const auto odd = spread_of({5.0, 1.0, 3.0});
+  EXPECT_EQ(odd.median, 3.0);
+  EXPECT_EQ(odd.min, 1.0);
+  EXPECT_EQ(odd.max, 5.0);
+  EXPECT_EQ(odd.count, 3u);
+  const auto even = spread_of({4.0, 1.0, 3.0, 2.0});
+  EXPECT_EQ(even.median, 2.5);
+  EXPECT_EQ(even.min, 1.0);
+  EXPECT_EQ(even.max, 4.0);
+  const auto one = spread_of({0.35});
+  EXPECT_EQ(one.median, 0.35);
+  EXPECT_EQ(one.min, one.max);
+  EXPECT_THROW(spread_of({}), std::invalid_argument);
+}
+
+// The verdicts on made-up spreads, both kinds of bound, and the two runs of issue 12.
+TEST(BenchSummary, VerdictIsMetNotMetOrWithinNoise) {
+  using specular_bench::judge;
+  using specular_bench::Spread;
+  using specular_bench::Verdict;
+  const auto spread = [](double low, double median, double high) { return Spread{median, low, high, 5}; };
+  // "at least" (a ratio to std::pow): the whole spread above, below, across the bound.
+  EXPECT_EQ(judge(spread(3.2, 3.4, 3.6), true, 3.0), Verdict::met);
+  EXPECT_EQ(judge(spread(2.5, 2.7, 2.9), true, 3.0), Verdict::not_met);
+  EXPECT_EQ(judge(spread(2.9, 3.2, 3.4), true, 3.0), Verdict::within_noise);
+  EXPECT_EQ(judge(spread(2.6, 2.9, 3.1), true, 3.0), Verdict::within_noise) << "a median below is not 'not met'";
+  EXPECT_EQ(judge(spread(3.0, 3.0, 3.0), true, 3.0), Verdict::met) << "equal to the bound meets it";
+  // "at most" (a slowdown): the mirror image.
+  EXPECT_EQ(judge(spread(4.8, 4.9, 5.0), false, 6.0), Verdict::met);
+  EXPECT_EQ(judge(spread(6.1, 6.5, 6.8), false, 6.0), Verdict::not_met);
+  EXPECT_EQ(judge(spread(6.0, 6.0, 6.0), false, 6.0), Verdict::met);
+  // The issue's two runs: VCD slowdown 4.84x and 6.8x against <= 6x, the lt quantum
+  // 0.35x and 0.23x against >= 0.25x. Neither run alone could say; together, noise.
+  EXPECT_EQ(judge(specular_bench::spread_of({4.84, 6.8}), false, 6.0), Verdict::within_noise);
+  EXPECT_EQ(judge(specular_bench::spread_of({0.35, 0.23}), true, 0.25), Verdict::within_noise);
+  // A single repetition has no spread: it is met or not met, never noise.
+  EXPECT_EQ(judge(specular_bench::spread_of({0.23}), true, 0.25), Verdict::not_met);
+  EXPECT_STREQ(to_string(Verdict::within_noise), "within noise");
+  EXPECT_STREQ(to_string(Verdict::not_met), "not met");
+  EXPECT_STREQ(to_string(Verdict::met), "met");
+}
+
+// The count of verdicts the legend's count line prints.
+TEST(BenchSummary, VerdictCountAddsUp) {
+  specular_bench::VerdictCount count;
+  for (const auto v : {specular_bench::Verdict::met, specular_bench::Verdict::met,
+                       specular_bench::Verdict::not_met, specular_bench::Verdict::within_noise})
+    count.add(v);
+  EXPECT_EQ(count.met, 2);
+  EXPECT_EQ(count.not_met, 1);
+  EXPECT_EQ(count.within_noise, 1);
+  EXPECT_EQ(count.total(), 4);
 }
 
 TEST(BenchSmoke, UnknownModelIsRefusedWithTheChoices) {

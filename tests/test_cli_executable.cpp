@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "support/subprocess.h"
+#include "support/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -24,7 +25,7 @@ using specular::testing_support::slurp;
 
 /// A fresh, empty scratch directory for one test.
 fs::path scratch(const std::string& name) {
-  return specular::testing_support::fresh_directory("specular_tb_" + name);
+  return specular::testing_support::scratch_subdir(name);
 }
 
 /// Runs specular_tb with `arguments` (or, with `whole_command`, runs `arguments` as

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "support/scratch.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -27,7 +29,7 @@ struct SoakRun {
 };
 
 SoakRun run_soak(const std::string& arguments) {
-  const fs::path out = fs::path(testing::TempDir()) / "specular_soak_out.txt";
+  const fs::path out = specular::testing_support::scratch_file("soak_out.txt");
   const int raw = std::system(("'" + soak + "' " + arguments + " >'" + out.string() + "'").c_str());
   SoakRun r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -49,7 +51,6 @@ SoakRun run_soak(const std::string& arguments) {
         r.stages[stage][field.substr(0, equals)] = std::stod(field.substr(equals + 1));
     }
   }
-  fs::remove(out);
   return r;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "support/subprocess.h"
+#include "support/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -27,7 +28,7 @@ using specular::testing_support::run_command;
 using specular::testing_support::slurp;
 
 fs::path scratch(const std::string& name) {
-  return specular::testing_support::fresh_directory("specular_misuse_" + name);
+  return specular::testing_support::scratch_subdir(name);
 }
 
 /// Runs specular_tb with `arguments` (shell words) in `dir`; stdout/stderr are kept

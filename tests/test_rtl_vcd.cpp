@@ -10,8 +10,6 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,6 +22,7 @@
 
 #include "specular/format.h"
 #include "specular/reference.h"
+#include "support/scratch.h"
 #include "support/vcd.h"
 
 namespace fs = std::filesystem;
@@ -34,6 +33,7 @@ namespace {
 using testing_support::code_at;
 using testing_support::parse_vcd;
 using testing_support::Vcd;
+using testing_support::scratch_subdir;
 
 const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
 const fs::path source_dir = SPECULAR_SOURCE_DIR;
@@ -46,15 +46,6 @@ std::string slurp(const fs::path& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
-}
-
-/// A scratch folder of this test process's own (tests run in parallel).
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) /
-                       ("specular_rtl_vcd_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
 }
 
 /// specular_tb --model rtl on waveforms/example.csv with a VCD; returns the VCD's path.
@@ -80,7 +71,7 @@ const std::vector<Example> examples = {{0.9, 10, {200, 100, 50}},
                                        {0.99, 100, {255, 128, 0}}};
 
 TEST(RtlVcd, TimeUnitScopesAndPatentNames) {
-  const fs::path vcd_path = make_rtl_vcd(scratch("names"));
+  const fs::path vcd_path = make_rtl_vcd(scratch_subdir("names"));
   const std::string text = slurp(vcd_path);
   const Vcd vcd = parse_vcd(text);
   EXPECT_DOUBLE_EQ(vcd.timescale_seconds, 1e-12);
@@ -111,7 +102,7 @@ TEST(RtlVcd, TimeUnitScopesAndPatentNames) {
 }
 
 TEST(RtlVcd, SaveFileSignalsAreAllInTheVcd) {
-  const Vcd vcd = parse_vcd(slurp(make_rtl_vcd(scratch("gtkw"))));
+  const Vcd vcd = parse_vcd(slurp(make_rtl_vcd(scratch_subdir("gtkw"))));
   std::ifstream save(source_dir / "waveforms" / "specular_rtl.gtkw");
   ASSERT_TRUE(save) << "waveforms/specular_rtl.gtkw";
   int signals = 0;
@@ -141,7 +132,7 @@ const Row timing_table[] = {
 };
 
 TEST(RtlVcd, TimingTableHalfPeriodByHalfPeriod) {
-  const Vcd vcd = parse_vcd(slurp(make_rtl_vcd(scratch("timing"))));
+  const Vcd vcd = parse_vcd(slurp(make_rtl_vcd(scratch_subdir("timing"))));
   const auto starts = vcd.rises(dev + ".pin27_start");
   const auto dones = vcd.rises(dev + ".pin35_done");
   ASSERT_EQ(starts.size(), examples.size());

@@ -11,6 +11,7 @@
 #include "energy_study.h"
 #include "hemisphere.h"
 #include "specular/core.h"
+#include "support/scratch.h"
 
 using namespace specular;
 using namespace specular::study;
@@ -57,10 +58,7 @@ TEST(StudyEnergy, PoliciesScaleTheExactLobeToTheirClosedForms) {
   StudyOptions options;
   options.quick = true;
   options.workers = 2;
-  options.out_dir = (std::filesystem::path(testing::TempDir()) /
-                     ("specular_study_energy_" + std::to_string(getpid())))
-                        .string();
-  std::filesystem::create_directories(options.out_dir);
+  options.out_dir = specular::testing_support::scratch_subdir("out").string();
   const std::vector<EnergyRow> rows = run_energy_study(options);
   ASSERT_EQ(rows.size(), 4u * 3u);  // quick: n = 1, 10, 100, 1000 × three policies
   for (const EnergyRow& row : rows) {
@@ -79,7 +77,6 @@ TEST(StudyEnergy, PoliciesScaleTheExactLobeToTheirClosedForms) {
   };
   EXPECT_NEAR(find(1, Normalisation::patent).scaled.exact, 4 * pi * pi / 9, 1e-11);  // 4.386
   EXPECT_NEAR(find(1000, Normalisation::patent).scaled.exact, std::pow(2 * pi / 1002, 2), 1e-15);
-  std::filesystem::remove_all(options.out_dir);
 }
 
 TEST(StudyEnergy, FormulaIntegralMatchesAnIndependentRule) {

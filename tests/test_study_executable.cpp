@@ -26,21 +26,9 @@ using specular::testing_support::Outcome;
 using specular::testing_support::run_command;
 using specular::testing_support::slurp;
 
-/// A fresh, empty directory for one test, removed when the test ends.
+/// A fresh, empty directory for one test, in its own scratch folder (support/scratch.h).
 struct Scratch {
-  explicit Scratch(const std::string& name)
-      // The pid keeps runs from other build directories (ctest -j, other users) apart.
-      : path(fs::path(testing::TempDir()) /
-             ("specular_study_" + name + "_" + std::to_string(getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~Scratch() {
-    std::error_code ignored;
-    fs::remove_all(path, ignored);
-  }
-  Scratch(const Scratch&) = delete;
-  Scratch& operator=(const Scratch&) = delete;
+  explicit Scratch(const std::string& name) : path(specular::testing_support::scratch_subdir(name)) {}
   const fs::path path;
 };
 

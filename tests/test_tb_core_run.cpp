@@ -9,6 +9,7 @@
 
 #include "scoreboard.h"
 #include "testbench.h"
+#include "support/scratch.h"
 
 using namespace specular::tb;
 
@@ -84,7 +85,7 @@ void check_rows(const std::vector<Row>& rows, const std::string& policy, bool cl
 }
 
 std::string temp_file(const std::string& name, const std::string& content) {
-  const std::string path = testing::TempDir() + name;
+  const std::string path = specular::testing_support::scratch_file(name).string();
   std::ofstream(path) << content;
   return path;
 }
@@ -92,7 +93,7 @@ std::string temp_file(const std::string& name, const std::string& content) {
 }  // namespace
 
 TEST(TbCoreRun, InputFileEveryPolicyAgainstTheFormula) {
-  const std::string input = temp_file("specular_tb_core_input.csv",
+  const std::string input = temp_file("core_input.csv",
                                       "# edges and ordinary points\n"
                                       "0,1,255,255,255\n"
                                       "1,1,255,255,255\n"
@@ -116,7 +117,6 @@ TEST(TbCoreRun, InputFileEveryPolicyAgainstTheFormula) {
       check_rows(rows, policy, saturation == "clamp");
     }
   }
-  std::remove(input.c_str());
 }
 
 TEST(TbCoreRun, RandomRunPassesAndMatchesTheFormula) {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "testbench.h"
+#include "support/scratch.h"
 
 using namespace specular;
 using namespace specular::tb;
@@ -43,11 +44,10 @@ const std::string three_points =
     "0.5,1,255,255,255\n"
     "1,1000,7,8,9\n";
 
-/// One file per process: ctest runs this file's tests as parallel processes, and a
-/// shared name let one test rewrite the file while another was reading it.
+/// In the test's own scratch folder: ctest runs this file's tests as parallel processes,
+/// and a shared name let one test rewrite the file while another was reading it.
 std::string temp_input() {
-  const std::string path =
-      testing::TempDir() + "specular_tb_exit_status_" + std::to_string(::getpid()) + ".csv";
+  const std::string path = specular::testing_support::scratch_file("three_points.csv").string();
   std::ofstream(path) << three_points;
   return path;
 }
@@ -142,7 +142,7 @@ TEST(TbExitStatus, WrongRegister1FailsEveryValueCheck) {
 TEST(TbExitStatus, JsonAndTextCarryTheVerdictAndTheOutputFileIsComplete) {
   const auto tap = on_n(10, [](Result& res, double&) { res.reg9_pass2 += 1 << 13; });
   std::ostringstream out, err;
-  const std::string path = testing::TempDir() + "specular_tb_exit_status.json";
+  const std::string path = specular::testing_support::scratch_file("exit_status.json").string();
   std::remove(path.c_str());
   const int status = run_testbench({"--model", "core", "--input", temp_input(), "--format", "json",
                                     "--output", path},

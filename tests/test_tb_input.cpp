@@ -10,6 +10,7 @@
 
 #include "input.h"
 #include "usage_error.h"
+#include "support/scratch.h"
 
 using specular::Formats;
 using specular::code_t;
@@ -106,12 +107,12 @@ TEST(TbInput, MissingEmptyAndDirectoryFiles) {
   EXPECT_NE(file_error(missing).find("No such file"), std::string::npos);
   EXPECT_NE(file_error("/").find("directory"), std::string::npos);
 
-  const std::string empty = testing::TempDir() + "specular_tb_empty.csv";
+  const std::string empty = specular::testing_support::scratch_file("empty.csv").string();
   std::ofstream(empty) << "# only a comment\n\n";
   EXPECT_NE(file_error(empty).find("no operations"), std::string::npos);
   std::remove(empty.c_str());
 
-  const std::string good = testing::TempDir() + "specular_tb_good.csv";
+  const std::string good = specular::testing_support::scratch_file("good.csv").string();
   std::ofstream(good) << "0.25,4,10,20,30\n";
   EXPECT_EQ(read_stimuli_file(good, formats).size(), 1u);
   std::remove(good.c_str());

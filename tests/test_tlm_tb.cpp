@@ -17,6 +17,7 @@
 #include "specular/reference.h"
 
 #include "support/subprocess.h"
+#include "support/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -29,7 +30,7 @@ using specular::testing_support::run_command;
 using specular::testing_support::slurp;
 
 fs::path scratch(const std::string& name) {
-  return specular::testing_support::fresh_directory("specular_tlm_tb_" + name);
+  return specular::testing_support::scratch_subdir(name);
 }
 
 Outcome run_tb(const std::string& arguments, const fs::path& dir, const std::string& tag) {

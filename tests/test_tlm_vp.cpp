@@ -16,6 +16,7 @@
 #include "../examples/virtual_platform/scene.h"
 #include "specular/core.h"
 #include "specular/reference.h"
+#include "support/scratch.h"
 
 namespace fs = std::filesystem;
 
@@ -31,8 +32,10 @@ struct Image {
   unsigned char at(int x, int y, int ch) const { return rgb[3 * (static_cast<std::size_t>(y) * width + x) + ch]; }
 };
 
+/// Runs specular_vp in the folder of `log` (its scratch folder: a relative --out lands there).
 int run_vp(const std::string& arguments, const fs::path& log) {
-  const std::string command = "'" + vp + "' " + arguments + " >'" + log.string() + "' 2>&1";
+  const std::string command = "cd '" + log.parent_path().string() + "' && '" + vp + "' " + arguments +
+                              " >'" + log.string() + "' 2>&1";
   const int raw = std::system(command.c_str());
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
@@ -80,12 +83,7 @@ Image render_directly(int size, const Config& config) {
   return image;
 }
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / ("specular_vp_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path scratch(const std::string& name) { return specular::testing_support::scratch_subdir(name); }
 
 void expect_same_as_direct(const std::string& arguments, int size, const Config& config,
                            const std::string& name) {

@@ -9,6 +9,7 @@
 // *_real variables for other viewers.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "support/scratch.h"
 #include "support/vcd.h"
 
 namespace fs = std::filesystem;
@@ -30,6 +32,7 @@ namespace {
 
 const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
 const fs::path source_dir = SPECULAR_SOURCE_DIR;
+using specular::testing_support::scratch_subdir;
 
 using specular::testing_support::code_at;
 using specular::testing_support::parse_vcd;
@@ -45,8 +48,6 @@ std::string slurp(const fs::path& path) {
 /// Runs the README's waveform command into `dir` (plus `extra` options); returns the
 /// VCD's path.
 fs::path make_vcd(const fs::path& dir, const std::string& extra = "") {
-  fs::remove_all(dir);
-  fs::create_directories(dir);
   const fs::path vcd = dir / "specular.vcd";
   const std::string command = "cd '" + source_dir.string() + "' && '" + tb +
                               "' --input waveforms/example.csv --vcd '" + vcd.string() + "' " +
@@ -101,7 +102,7 @@ double formula_a(const Example& e) {
 }  // namespace
 
 TEST(VcdWaveform, TimeUnitScopesAndPatentNames) {
-  const fs::path vcd_path = make_vcd(fs::path(testing::TempDir()) / "specular_vcd_names");
+  const fs::path vcd_path = make_vcd(scratch_subdir("vcd"));
   ASSERT_TRUE(fs::exists(vcd_path));
   const std::string text = slurp(vcd_path);
   const Vcd vcd = parse_vcd(text);
@@ -148,7 +149,7 @@ TEST(VcdWaveform, TimeUnitScopesAndPatentNames) {
 // --real-views: seven real-valued mirrors, each the code of its bus over 2^frac.
 TEST(VcdWaveform, RealViewsOnRequestMirrorTheCodes) {
   const fs::path vcd_path =
-      make_vcd(fs::path(testing::TempDir()) / "specular_vcd_real_views", "--real-views");
+      make_vcd(scratch_subdir("vcd"), "--real-views");
   const Vcd vcd = parse_vcd(slurp(vcd_path));
   const std::vector<std::pair<std::string, std::string>> views = {
       {"reg1_q_real", dut + ".reg1_q[16:0]"},          {"reg9_q_real", dut + ".reg9_q[36:0]"},
@@ -177,7 +178,7 @@ TEST(VcdWaveform, RealViewsOnRequestMirrorTheCodes) {
 }
 
 TEST(VcdWaveform, WavesFollowTheTimingTableAndTheFormula) {
-  const fs::path vcd_path = make_vcd(fs::path(testing::TempDir()) / "specular_vcd_waves");
+  const fs::path vcd_path = make_vcd(scratch_subdir("vcd"));
   const Vcd vcd = parse_vcd(slurp(vcd_path));
   const long long unit_ps = std::llround(vcd.timescale_seconds * 1e12);
   ASSERT_GT(unit_ps, 0);
@@ -208,7 +209,7 @@ TEST(VcdWaveform, WavesFollowTheTimingTableAndTheFormula) {
 }
 
 TEST(VcdWaveform, GtkwaveSaveFileNamesOnlySignalsOfTheVcd) {
-  const fs::path vcd_path = make_vcd(fs::path(testing::TempDir()) / "specular_vcd_gtkw");
+  const fs::path vcd_path = make_vcd(scratch_subdir("vcd"));
   const Vcd vcd = parse_vcd(slurp(vcd_path));
   std::set<std::string> names;
   for (const auto& v : vcd.vars) names.insert(v.gtkwave());
@@ -271,7 +272,7 @@ TEST(VcdWaveform, GtkwaveSaveFileNamesOnlySignalsOfTheVcd) {
 TEST(VcdWaveform, GtkwaveReadsTheVcd) {
   if (std::system("command -v vcd2fst >/dev/null 2>&1 && command -v fst2vcd >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "GTKWave not installed (scripts/setup.sh --gtkwave)";
-  const fs::path dir = fs::path(testing::TempDir()) / "specular_vcd_gtkwave";
+  const fs::path dir = scratch_subdir("vcd");
   const fs::path vcd_path = make_vcd(dir);
   const fs::path fst = dir / "specular.fst", back = dir / "back.vcd";
   const std::string command = "vcd2fst '" + vcd_path.string() + "' '" + fst.string() +
@@ -295,7 +296,7 @@ TEST(VcdWaveform, GtkwaveReadsTheVcd) {
 TEST(VcdWaveform, GtkwaveShowsTheBusesAsRealNumbers) {
   if (std::system("command -v gtkwave >/dev/null 2>&1 && command -v xvfb-run >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "GTKWave or Xvfb not installed (scripts/setup.sh --gtkwave)";
-  const fs::path dir = fs::path(testing::TempDir()) / "specular_vcd_gtkwave_shows";
+  const fs::path dir = scratch_subdir("vcd");
   const fs::path vcd_path = make_vcd(dir);
   const Vcd vcd = parse_vcd(slurp(vcd_path));
   const auto dones = vcd.rises(top + ".pin35_done");
@@ -317,7 +318,11 @@ TEST(VcdWaveform, GtkwaveShowsTheBusesAsRealNumbers) {
             "}\n"
             "gtkwave::/File/Quit\n";
   script.close();
-  const std::string command = "cd '" + dir.string() + "' && timeout 120 xvfb-run -a gtkwave -S ask.tcl '" +
+  // xvfb-run -a looks for a free display from the one given: start each process at its
+  // own (another run beside this one would race for :99).
+  const std::string display = std::to_string(100 + ::getpid() % 5000);
+  const std::string command = "cd '" + dir.string() + "' && timeout 120 xvfb-run -a -n " + display +
+                              " gtkwave -S ask.tcl '" +
                               vcd_path.string() + "' '" +
                               (source_dir / "waveforms" / "specular.gtkw").string() +
                               "' >shown.txt 2>&1";

@@ -11,6 +11,8 @@
 #include <sstream>
 #include <string>
 
+#include "scratch.h"
+
 namespace specular {
 namespace testing_support {
 
@@ -27,13 +29,8 @@ inline std::string slurp(const std::filesystem::path& path) {
   return s.str();
 }
 
-/// A fresh, empty directory `name` under GoogleTest's temporary directory.
-inline std::filesystem::path fresh_directory(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::path(testing::TempDir()) / name;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+/// A fresh, empty directory `name` in the test's own scratch folder (scratch.h).
+inline std::filesystem::path fresh_directory(const std::string& name) { return scratch_subdir(name); }
 
 /// Runs `command` through the shell with standard input closed. Standard output and
 /// error go through `log_dir`/`tag`.out and .err, removed again before returning, so

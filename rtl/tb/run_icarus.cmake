@@ -4,6 +4,7 @@
 # starts at 2 T), edge cases of cos and n, then random operations (a reload, 3 T, each).
 # CORRUPT=ON: one expected value is changed first, and the testbench must stop with a
 # MISMATCH on that vector (the testbench can fail).
+string(REPLACE "|" ";" SOURCES "${SOURCES}")
 file(REMOVE_RECURSE ${SCRATCH})
 file(MAKE_DIRECTORY ${SCRATCH})
 
@@ -65,7 +66,7 @@ else()
   set(literal 0)
 endif()
 execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -o ${SCRATCH}/device_tb.vvp -s specular_device_tb
+  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/device_tb.vvp -s specular_device_tb
           "-Pspecular_device_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
           "-Pspecular_device_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
           "-Pspecular_device_tb.VECTORS=\"${SCRATCH}/vectors.csv\""

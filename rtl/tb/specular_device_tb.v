@@ -114,7 +114,7 @@ module specular_device_tb;
   // ---- monitors: results as the harness samples them ----
   reg     monitoring = 0;   // off during an aborted operation
   integer started = 0, pass1_seen = 0, done_seen = 0, fall_seen = 0, checks = 0;
-  realtime start_time [0:MAX_VECTORS-1];
+  real     start_time [0:MAX_VECTORS-1];
 
   task mismatch(input integer index, input [8*24-1:0] what, input [63:0] got, input [63:0] want);
     $fatal(1, "specular_device_tb: MISMATCH vector %0d (cos %f n %0d RGB %0d,%0d,%0d) %0s: got %h, want %h at %0t",
@@ -151,18 +151,18 @@ module specular_device_tb;
   end
 
   // ---- driver ----
-  realtime next_start, prev_start;
+  real     next_start, prev_start;
   integer  i, resets = 0, back_to_back = 0;
   reg      loaded;
   integer  loaded_n, loaded_r, loaded_g, loaded_b;
 
   // The first rising clock edge at least a quarter period from now.
-  function realtime first_edge_after_quarter(input realtime now);
-    realtime edge;
+  function real first_edge_after_quarter(input real now);
+    real rising;
     begin
-      edge = T / 2;
-      while (edge < now + T / 4) edge = edge + T;
-      first_edge_after_quarter = edge;
+      rising = T / 2;
+      while (rising < now + T / 4) rising = rising + T;
+      first_edge_after_quarter = rising;
     end
   endfunction
 
@@ -173,8 +173,9 @@ module specular_device_tb;
              when, $realtime, pin35_done, obs_q41, obs_q42, obs_select36, obs_write37, obs_nand45);
   endtask
 
-  // Start an operation at `at` (a rising clock edge), data a quarter period before.
-  task start_operation(input realtime at, input [COS_FRAC:0] cos_code, input integer index);
+  // Start an operation at `at` (a rising clock edge), data a quarter period before;
+  // returns with start high, at the start edge (the caller lowers it T/2 later).
+  task raise_start(input real at, input [COS_FRAC:0] cos_code, input integer index);
     reg reload;
     begin
       reload = !loaded || v_n[index] != loaded_n || v_r[index] != loaded_r ||
@@ -191,27 +192,34 @@ module specular_device_tb;
       #(T / 4);
       {pin30_load_n, pin31_load_r, pin32_load_g, pin33_load_b} = 4'b0000;
       pin27_start = 1;
-      #(T / 2);
-      pin27_start = 0;
     end
   endtask
 
   // An operation aborted by reset `phase` quarter periods after its start edge.
   task aborted_operation(input integer index, input integer phase);
-    realtime at;
+    real at;
     begin
+      wait (done_seen == started);  // the operations before it are complete
       monitoring = 0;
       at = first_edge_after_quarter($realtime);
       if (at < prev_start + 3 * T) at = prev_start + 3 * T;
-      start_operation(at, ~v_reg1[index] & {1'b0, {COS_FRAC{1'b1}}}, index);
-      #(at + phase * T / 4 - $realtime);
-      pin29_reset_n = 0;
-      #(T / 100);
-      expect_idle("during");
-      #(T - T / 100);
-      pin29_reset_n = 1;
-      #(T / 100);
-      expect_idle("after");
+      raise_start(at, ~v_reg1[index] & {1'b0, {COS_FRAC{1'b1}}}, index);
+      fork
+        begin
+          #(T / 2);
+          pin27_start = 0;
+        end
+        begin
+          #(phase * T / 4);
+          pin29_reset_n = 0;
+          #(T / 100);
+          expect_idle("during");
+          #(T - T / 100);
+          pin29_reset_n = 1;
+          #(T / 100);
+          expect_idle("after");
+        end
+      join
       resets = resets + 1;
       prev_start = -10 * T;
       monitoring = 1;
@@ -244,7 +252,9 @@ module specular_device_tb;
       start_time[i] = next_start;
       started = started + 1;
       prev_start = next_start;
-      start_operation(next_start, $rtoi(v_cos[i] * (1 << COS_FRAC) + 0.5), i);
+      raise_start(next_start, $rtoi(v_cos[i] * (1 << COS_FRAC) + 0.5), i);
+      #(T / 2);
+      pin27_start = 0;
     end
     #(3 * T);
     if (done_seen != count || pass1_seen != count || fall_seen != count)

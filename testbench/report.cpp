@@ -62,7 +62,8 @@ std::string clock_text(std::uint64_t ps) {
 std::string header_line(const RunDescription& run) {
   std::ostringstream s;
   s << "model " << run.model << ", normalisation " << to_string(run.config.normalisation)
-    << ", saturation " << to_string(run.config.saturation);
+    << ", saturation " << to_string(run.config.saturation) << ", constants "
+    << to_string(run.config.constants);
   if (run.model == "pin") s << ", clock " << clock_text(run.clock_period_ps);
   s << ", " << run.operations << " computation(s) from " << run.stimulus;
   return s.str();
@@ -184,7 +185,8 @@ class JsonReport : public Report {
     out_ << "{\n  \"tool\": \"specular_tb\",\n  \"settings\": {\"model\": \"" << run.model
          << "\", \"stimulus\": \"" << escape(run.stimulus) << "\", \"normalisation\": \""
          << to_string(run.config.normalisation) << "\", \"saturation\": \""
-         << to_string(run.config.saturation) << "\", \"clock_period_ps\": " << run.clock_period_ps
+         << to_string(run.config.saturation) << "\", \"constants\": \""
+         << to_string(run.config.constants) << "\", \"clock_period_ps\": " << run.clock_period_ps
          << ", \"operations\": " << run.operations << ",\n    \"formats\": {\"cos\": \""
          << f.cos.name() << "\", \"reg9\": \"" << f.reg9.name() << "\", \"rom38\": \""
          << f.rom38.name() << "\", \"norm\": \"" << f.norm.name() << "\", \"out\": \""

@@ -51,8 +51,8 @@ class PinHarness : public sc_core::sc_module {
   sc_core::sc_clock pin28_clk;
   bus_signal pin17_cos{"pin17_cos"};
   bus_signal pin18_n{"pin18_n"};
-  bus_signal pin19_half{"pin19_half"};
-  bus_signal pin20_one{"pin20_one"};
+  bus_signal pin19_h{"pin19_h"};
+  bus_signal pin20_a{"pin20_a"};
   bus_signal pin21_r{"pin21_r"};
   bus_signal pin22_g{"pin22_g"};
   bus_signal pin23_b{"pin23_b"};

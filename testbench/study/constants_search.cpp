@@ -1,5 +1,7 @@
 #include "constants_search.h"
 
+#include "csv.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -164,6 +166,35 @@ ConstantsResult search_constants(int h_frac_bits, std::int64_t h_fixed_code) {
   r.boxes = s.boxes;
   r.evaluations = s.evaluations;
   return r;
+}
+
+ConstantsTable constants_table(int max_f) {
+  ConstantsTable t;
+  ConstantsResult patent;
+  patent.h_frac_bits = 1, patent.h_code = 1, patent.a_code = std::int64_t{1} << search_a_frac_bits;
+  patent.a = 1, patent.h = 0.5, patent.s = 1, patent.error = constants_error(1, 0.5);
+  t.rows.emplace_back("patent", patent);
+  t.rows.emplace_back("minimax-half", search_constants(1, 1));
+  for (int f = 1; f <= max_f; ++f) t.rows.emplace_back("minimax", search_constants(f));
+  t.best = t.rows.back().second.error.worst();
+  for (const auto& row : t.rows) t.best = std::min(t.best, row.second.error.worst());
+  for (const auto& row : t.rows)
+    if (row.first == "minimax" && t.chosen_f == 0 && row.second.error.worst() <= 1.01 * t.best)
+      t.chosen_f = row.second.h_frac_bits;
+  return t;
+}
+
+void write_constants_csv(const ConstantsTable& table, const std::string& path) {
+  CsvWriter csv(path, {"search", "F", "extra_mul6_bits", "h_code", "h", "a_code", "a", "s",
+                       "max_error", "error_above", "error_below", "boxes", "evaluations"});
+  for (const auto& [name, r] : table.rows) {
+    csv.cell(name).cell(static_cast<long long>(r.h_frac_bits))
+        .cell(static_cast<long long>(r.h_frac_bits - 1)).cell(static_cast<long long>(r.h_code))
+        .cell(r.h).cell(static_cast<long long>(r.a_code)).cell(r.a).cell(r.s)
+        .cell(r.error.worst()).cell(r.error.above).cell(r.error.below)
+        .cell(static_cast<long long>(r.boxes)).cell(static_cast<long long>(r.evaluations));
+    csv.end_row();
+  }
 }
 
 }  // namespace study

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace specular {
@@ -52,6 +54,18 @@ constexpr int search_a_int_bits = 14;
 /// when `h_fixed_code` ≥ 0, the best a with h = h_fixed_code·2^−F. Deterministic: ties
 /// go to the smaller h code, then the smaller a code.
 ConstantsResult search_constants(int h_frac_bits, std::int64_t h_fixed_code = -1);
+
+/// The trade-off table: the patent's point, minimax-half, and minimax for F = 1 … max_f,
+/// with the F the data choose (the fewest bits within 1 % of the best any F reaches).
+struct ConstantsTable {
+  std::vector<std::pair<std::string, ConstantsResult>> rows;  ///< "patent", "minimax-half", "minimax"
+  int chosen_f = 0;
+  double best = 0;
+};
+ConstantsTable constants_table(int max_f);
+/// constants_search.csv: search, F, extra_mul6_bits, h_code, h, a_code, a, s, max_error,
+/// error_above, error_below, boxes, evaluations.
+void write_constants_csv(const ConstantsTable& table, const std::string& path);
 
 }  // namespace study
 }  // namespace specular

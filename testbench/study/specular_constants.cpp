@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "constants_search.h"
-#include "csv.h"
 
 using namespace specular::study;
 
@@ -74,34 +73,13 @@ int main(int argc, char** argv) {
   }
 
   try {
-    std::vector<std::pair<std::string, ConstantsResult>> rows;
-    rows.emplace_back("patent", ConstantsResult{});
-    {
-      ConstantsResult& p = rows.back().second;
-      p.h_frac_bits = 1, p.h_code = 1, p.a_code = std::int64_t{1} << search_a_frac_bits;
-      p.a = 1, p.h = 0.5, p.s = 1, p.error = constants_error(1, 0.5);
-    }
-    rows.emplace_back("minimax-half", search_constants(1, 1));
-    for (int f = 1; f <= max_f; ++f) rows.emplace_back("minimax", search_constants(f));
-
-    // The data's choice: the fewest fraction bits within 1 % of the best any F reaches.
-    double best = rows.back().second.error.worst();
-    for (const auto& row : rows) best = std::min(best, row.second.error.worst());
-    int chosen = 0;
-    for (const auto& row : rows)
-      if (row.first == "minimax" && chosen == 0 && row.second.error.worst() <= 1.01 * best)
-        chosen = row.second.h_frac_bits;
-
-    CsvWriter csv(out, {"search", "F", "extra_mul6_bits", "h_code", "h", "a_code", "a", "s",
-                        "max_error", "error_above", "error_below", "boxes", "evaluations"});
+    const ConstantsTable table = constants_table(max_f);
+    write_constants_csv(table, out);
+    const int chosen = table.chosen_f;
+    const double best = table.best;
+    const auto& rows = table.rows;
     std::printf("search        F  mul6+  h (code/2^F)          a (code/2^22)            s            max error   boxes\n");
     for (const auto& [name, r] : rows) {
-      csv.cell(name).cell(static_cast<long long>(r.h_frac_bits))
-          .cell(static_cast<long long>(r.h_frac_bits - 1)).cell(static_cast<long long>(r.h_code))
-          .cell(r.h).cell(static_cast<long long>(r.a_code)).cell(r.a).cell(r.s)
-          .cell(r.error.worst()).cell(r.error.above).cell(r.error.below)
-          .cell(static_cast<long long>(r.boxes)).cell(static_cast<long long>(r.evaluations));
-      csv.end_row();
       std::printf("%-12s %2d  %4d   %6lld = %-11.9f  %8lld = %-12.9f  %-11.9f  %.9f  %ld%s\n",
                   name.c_str(), r.h_frac_bits, r.h_frac_bits - 1, static_cast<long long>(r.h_code),
                   r.h, static_cast<long long>(r.a_code), r.a, r.s, r.error.worst(), r.boxes,

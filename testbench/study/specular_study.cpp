@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "constants_search.h"
 #include "csv.h"
 #include "energy_study.h"
 #include "error_study.h"
@@ -103,6 +104,8 @@ int main(int argc, char** argv) {
     make_directory(options.out_dir);
     std::cerr << "specular_study: writing to " << options.out_dir
               << (options.quick ? " (quick mode)" : "") << "\n";
+    std::cerr << "constants search (specular_constants)\n";
+    write_constants_csv(constants_table(16), options.out_dir + "/constants_search.csv");
     const ErrorSummary errors = run_error_study(options);
     const std::vector<EnergyRow> energy = run_energy_study(options);
     const std::vector<DeviceEnergyRow> device_energy = run_device_energy_study(options);

@@ -89,6 +89,19 @@ TEST(CliExecutable, BadConstantsAndPolicyExitTwoNamingTheChoices) {
             std::string::npos) << r.err;
 }
 
+TEST(CliExecutable, ARefusedPolicyCombinationExitsTwoBeforeRunning) {
+  const fs::path dir = scratch("refused_combination");
+  const fs::path target = dir / "out.csv";
+  const Outcome r = run_tb("--cos 0.5 --n 3 --policy device-energy --saturation literal --output '" +
+                               target.string() + "'", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("saturation literal with normalisation device-energy and constants patent"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("use saturation clamp or other constants"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(target));
+}
+
 TEST(CliExecutable, ConstantsAndDeviceEnergyRunAndPass) {
   const fs::path dir = scratch("constants_run");
   // cos = 1: the device's peak s·A = 1, so under normalisation none with minimax

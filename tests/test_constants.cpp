@@ -92,6 +92,26 @@ TEST(PinCodes, BusesTooNarrowForTheConstantsAreRefusedByName) {
   EXPECT_NO_THROW(Core{config});
 }
 
+TEST(Rom38, AWordAboveItsFormatIsRefusedNotSaturated) {
+  // energy × minimax: s·(n+2)/(2π) = 1.664245923·967/(2π) = 256.13 at n = 965, the first
+  // word above U8.16's 256 − 2^-16: the reason ROM 38 is U9.16 now.
+  Config config;
+  config.widths.rom38_int_bits = 8;
+  config.normalisation = Normalisation::energy;
+  config.constants = Constants::minimax;
+  try {
+    Core core(config);
+    FAIL() << "U8.16 cannot hold s·K(965)";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("ROM 38 word for n = 965 is 256.13"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("widen rom38_int_bits"), std::string::npos) << e.what();
+  }
+  config.widths = Widths{};
+  const Core core(config);  // U9.16 holds every word, n = 0 … 1023
+  EXPECT_NEAR(static_cast<double>(core.rom38().k(1023)), 1.664245923 * 1025 / (2 * M_PI) * 65536, 1.0);
+}
+
 TEST(PatentConstants, BitIdenticalToTheDeviceBeforePin19AndRom38Grew) {
   // Today's device: pin 19 U10.8, ROM 38 U9.16. Before issue 14: U10.1 and U8.16.
   Config before;

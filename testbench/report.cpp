@@ -74,6 +74,16 @@ std::string formats_line(const Config& config) {
   std::ostringstream s;
   s << "formats: cos " << f.cos.name() << ", reg9 " << f.reg9.name() << ", ROM 38 "
     << f.rom38.name() << ", norm " << f.norm.name() << ", out " << f.out.name();
+  if (config.constants != Constants::patent) {
+    // What the columns mean when pins 19 and 20 do not carry ½ and 1 (issue 14).
+    const ConstantValues& c = constant_values(config.constants);
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "\nconstants: pin 20 a = %.9f, pin 19 h = %.9f, ROM 38 scale s = %.9f; approx = "
+                  "register 9 = a - h*log2(a - n*log2 cos), peak 1/s = %.6f; norm = s*K(n)*approx",
+                  c.a(), c.h(), c.s(), 1.0 / c.s());
+    s << text;
+  }
   return s.str();
 }
 

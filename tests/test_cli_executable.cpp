@@ -114,6 +114,9 @@ TEST(CliExecutable, ConstantsAndDeviceEnergyRunAndPass) {
   const Outcome e = run_tb("--sweep --model core --policy device-energy --constants minimax-half", dir);
   EXPECT_EQ(e.status, 0) << e.err << e.out;
   EXPECT_NE(e.out.find("constants minimax-half"), std::string::npos) << e.out;
+  // The report says what the columns mean under these constants.
+  EXPECT_NE(e.out.find("pin 20 a = 1.148987293, pin 19 h = 0.500000000, ROM 38 scale s = 0.953465295"),
+            std::string::npos) << e.out;
 }
 
 TEST(CliExecutable, NonNumberAndUnknownOptionExitTwo) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "support/accuracy_sweep.h"
+#include "support/pins_run.h"
 #include "specular/constants.h"
 #include "specular/core.h"
 
@@ -203,6 +204,45 @@ TEST(ConstantsNames, ParseAndPrintRoundTripAndBadNamesAreRefused) {
                  "constants policy 'minmax' is not one of: patent, minimax-half, minimax");
   }
   EXPECT_THROW(parse_normalisation("device_energy"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace specular
+
+namespace specular {
+namespace {
+
+// The pin harness ties pins 19 and 20 to the policy's constants: the pin model under
+// minimax equals the core on corners and a sample (the long tests do the whole sweep),
+// and the pins carry the codes the policy names.
+TEST(PinModel, MinimaxConstantsOnThePinsGiveTheCoresResults) {
+  Config config;
+  config.constants = Constants::minimax;
+  config.normalisation = Normalisation::device_energy;
+  const Core core(config);
+  std::vector<Operands> ops;
+  for (unsigned n : {1u, 2u, 17u, 500u, 1000u})
+    for (code_t c : {code_t{0}, code_t{1}, code_t{30000}, code_t{65000}, code_t{65535}, code_t{65536}}) {
+      Operands in;
+      in.cos = c;
+      in.n = n;
+      in.rgb = {255, 128, 1};
+      ops.push_back(in);
+    }
+  PinHarness harness("harness", config, sc_core::sc_time(10, sc_core::SC_NS));
+  testing_support::PinDriver driver("driver", harness, ops);
+  sc_core::sc_start();
+  EXPECT_EQ(harness.pin19_h.read(), 41);       // h = 41/256 on U10.8
+  EXPECT_EQ(harness.pin20_a.read(), 1564586);  // a on S14.22
+  ASSERT_EQ(driver.out.results.size(), ops.size());
+  for (std::size_t i = 0; i < ops.size(); ++i) {
+    const Result want = core.run(ops[i]);
+    const Result& got = driver.out.results[i];
+    EXPECT_EQ(got.reg9_pass1, want.reg9_pass1) << i;
+    EXPECT_EQ(got.reg9_pass2, want.reg9_pass2) << i;
+    EXPECT_EQ(got.rom38_k, want.rom38_k) << i;
+    EXPECT_EQ(got.out, want.out) << i;
+  }
 }
 
 }  // namespace

@@ -111,6 +111,12 @@ TEST(Rom38, AWordAboveItsFormatIsRefusedNotSaturated) {
   config.widths = Widths{};
   const Core core(config);  // U9.16 holds every word, n = 0 … 1023
   EXPECT_NEAR(static_cast<double>(core.rom38().k(1023)), 1.664245923 * 1025 / (2 * M_PI) * 65536, 1.0);
+  // Address 0, never used: with n = 0 the lobe is flat at A = 1/s, so device-energy's
+  // word 1/I(0) is s/π, as energy's s·2/(2π) is.
+  config.normalisation = Normalisation::device_energy;
+  const Core device_energy(config);
+  EXPECT_NEAR(static_cast<double>(device_energy.rom38().k(0)), 1.664245923 / M_PI * 65536, 2.0);
+  EXPECT_NEAR(static_cast<double>(device_energy.rom38().k(0)), static_cast<double>(core.rom38().k(0)), 2.0);
 }
 
 TEST(PatentConstants, BitIdenticalToTheDeviceBeforePin19AndRom38Grew) {

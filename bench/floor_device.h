@@ -17,8 +17,8 @@ class FloorDevice : public sc_core::sc_module {
  public:
   specular::bus_in pin17_cos{"pin17_cos"};
   specular::bus_in pin18_n{"pin18_n"};
-  specular::bus_in pin19_half{"pin19_half"};
-  specular::bus_in pin20_one{"pin20_one"};
+  specular::bus_in pin19_h{"pin19_h"};
+  specular::bus_in pin20_a{"pin20_a"};
   specular::bus_in pin21_r{"pin21_r"};
   specular::bus_in pin22_g{"pin22_g"};
   specular::bus_in pin23_b{"pin23_b"};
@@ -42,7 +42,7 @@ class FloorDevice : public sc_core::sc_module {
   specular::bus_signal mul39_norm{"mul39_norm"};
 
   FloorDevice(sc_core::sc_module_name name, const specular::Config& config, bool /*real_views*/)
-      : sc_module(name), formats_(config.widths) {
+      : sc_module(name), config_(config), formats_(config.widths) {
     SPECULAR_HAS_PROCESS(FloorDevice);
     SC_METHOD(on_start);
     sensitive << pin27_start.pos();
@@ -54,8 +54,8 @@ class FloorDevice : public sc_core::sc_module {
   }
 
   const specular::Formats& formats() const { return formats_; }
-  specular::code_t constant_half19() const { return formats_.half_code(); }
-  specular::code_t constant_one20() const { return formats_.one_code(); }
+  specular::code_t constant_h19() const { return specular::pin19_code(config_); }
+  specular::code_t constant_a20() const { return specular::pin20_code(config_); }
   void trace(sc_core::sc_trace_file*) const {}
 
  private:
@@ -83,6 +83,7 @@ class FloorDevice : public sc_core::sc_module {
     phase_ = (phase_ + 1) % 3;
   }
 
+  specular::Config config_;
   specular::Formats formats_;
   sc_core::sc_time period_;
   sc_core::sc_event_queue edges_{"edges"};

@@ -7,12 +7,12 @@ module adder8 #(
   parameter W = 37
 ) (
   input  wire         literal,   // configuration: 1 = Saturation::literal, 0 = clamp
-  input  wire [W-1:0] one20,
+  input  wire [W-1:0] a20,
   input  wire [W-1:0] inverted,
   input  wire         carry34,
   output wire [W-1:0] sum
 );
-  wire [W-1:0] raw = one20 + inverted + {{(W-1){1'b0}}, carry34};
+  wire [W-1:0] raw = a20 + inverted + {{(W-1){1'b0}}, carry34};
   assign sum = (!literal && raw[W-1]) ? {W{1'b0}} : raw;
 endmodule
 

@@ -9,10 +9,10 @@ module multiplexer4 #(
 ) (
   input  wire                   select36,
   input  wire [N_BITS-1:0]      reg2,
-  input  wire [N_BITS+FRAC-1:0] half19,
+  input  wire [N_BITS+FRAC-1:0] h19,
   output wire [N_BITS+FRAC-1:0] operand
 );
-  assign operand = select36 ? half19 : {reg2, {FRAC{1'b0}}};
+  assign operand = select36 ? h19 : {reg2, {FRAC{1'b0}}};
 endmodule
 
 `default_nettype wire

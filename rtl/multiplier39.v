@@ -17,8 +17,8 @@ module multiplier39 #(
   localparam PROD_W = A_W + K_W + 1;
   localparam SUM_W = (PROD_W + 1 > SHIFT + OUT_W) ? PROD_W + 1 : SHIFT + OUT_W;
 
-  wire signed [SUM_W-1:0] a = {{(SUM_W-A_W){reg9[A_W-1]}}, reg9};
-  wire signed [SUM_W-1:0] b = {{(SUM_W-K_W){1'b0}}, k};
+  wire signed [A_W-1:0] a = reg9;
+  wire signed [K_W:0] b = {1'b0, k};  // unsigned, one sign bit added
   wire signed [SUM_W-1:0] full = a * b;
   localparam [SUM_W-1:0] BIAS = (SHIFT > 0) ? ({{(SUM_W-1){1'b0}}, 1'b1} << (SHIFT - 1)) : 0;
   wire [SUM_W-1:0] biased = full + BIAS;

@@ -17,8 +17,8 @@ module multiplier6 #(
   localparam PROD_W = LOG2_W + OPERAND_W + 1;
   localparam SUM_W = (PROD_W + 1 > SHIFT + OUT_W) ? PROD_W + 1 : SHIFT + OUT_W;
 
-  wire signed [SUM_W-1:0] a = {{(SUM_W-LOG2_W){log2[LOG2_W-1]}}, log2};
-  wire signed [SUM_W-1:0] b = {{(SUM_W-OPERAND_W){1'b0}}, operand};
+  wire signed [LOG2_W-1:0] a = log2;
+  wire signed [OPERAND_W:0] b = {1'b0, operand};  // unsigned, one sign bit added
   wire signed [SUM_W-1:0] full = a * b;
 
   generate

@@ -16,8 +16,8 @@ module multiplier_rgb #(
   localparam PROD_W = NORM_W + RGB_BITS + 1;
   localparam SUM_W = (PROD_W + 1 > SHIFT + OUT_W) ? PROD_W + 1 : SHIFT + OUT_W;
 
-  wire signed [SUM_W-1:0] a = {{(SUM_W-NORM_W){norm[NORM_W-1]}}, norm};
-  wire signed [SUM_W-1:0] b = {{(SUM_W-RGB_BITS){1'b0}}, intensity};
+  wire signed [NORM_W-1:0] a = norm;
+  wire signed [RGB_BITS:0] b = {1'b0, intensity};  // unsigned, one sign bit added
   wire signed [SUM_W-1:0] full = a * b;
   localparam [SUM_W-1:0] BIAS = (SHIFT > 0) ? ({{(SUM_W-1){1'b0}}, 1'b1} << (SHIFT - 1)) : 0;
   wire [SUM_W-1:0] biased = full + BIAS;

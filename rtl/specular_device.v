@@ -8,16 +8,16 @@ module specular_device #(
   parameter COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8,
   parameter ROM5_ADDR_BITS = 15, ROM5_WORD_BITS = 22,
   parameter REG9_INT = 14, REG9_FRAC = 22,
-  parameter MUX4_FRAC = 1,
-  parameter ROM38_INT = 8, ROM38_FRAC = 16, ROM38_BANK_BITS = 2,
+  parameter MUX4_FRAC = 8,
+  parameter ROM38_INT = 9, ROM38_FRAC = 16, ROM38_BANK_BITS = 4,
   parameter NORM_INT = 10, NORM_FRAC = 20,
   parameter OUT_INT = 18, OUT_FRAC = 13,
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex"
 ) (
   input  wire [COS_FRAC:0]                    pin17_cos,    // U1.COS_FRAC
   input  wire [N_BITS-1:0]                    pin18_n,
-  input  wire [N_BITS+MUX4_FRAC-1:0]          pin19_half,   // wired constant 1/2
-  input  wire signed [REG9_INT+REG9_FRAC:0]   pin20_one,    // wired constant 1.0
+  input  wire [N_BITS+MUX4_FRAC-1:0]          pin19_h,      // h: 1/2 under the patent's constants
+  input  wire signed [REG9_INT+REG9_FRAC:0]   pin20_a,      // a: 1.0 under the patent's constants
   input  wire [RGB_BITS-1:0]                  pin21_r, pin22_g, pin23_b,
   output wire signed [OUT_INT+OUT_FRAC:0]     pin24_r, pin25_g, pin26_b,
   input  wire pin27_start, pin28_clk, pin29_reset_n,
@@ -74,7 +74,7 @@ module specular_device #(
   multiplexer3 #(.COS_W(COS_W), .REG9_W(REG9_W), .ALIGN(REG9_FRAC - COS_FRAC)) mux3 (
     .select36(select36), .reg1(reg1_q), .reg9(reg9_q), .address(mux3_address));
   multiplexer4 #(.N_BITS(N_BITS), .FRAC(MUX4_FRAC)) mux4 (
-    .select36(select36), .reg2(reg2_q), .half19(pin19_half), .operand(mux4_operand));
+    .select36(select36), .reg2(reg2_q), .h19(pin19_h), .operand(mux4_operand));
   rom5 #(.ADDR_BITS(ROM5_ADDR_BITS), .WORD_BITS(ROM5_WORD_BITS), .BUS_W(REG9_W),
          .BUS_FRAC(REG9_FRAC), .COS_FRAC(COS_FRAC), .LOG2_W(LOG2_W),
          .IMAGE(ROM5_IMAGE)) rom5 (
@@ -84,7 +84,7 @@ module specular_device #(
     .log2(rom5_log2), .operand(mux4_operand), .product(mul6_product));
   inverter7 #(.W(REG9_W)) inv7 (.product(mul6_product), .inverted(inv7_inverted));
   adder8 #(.W(REG9_W)) adder8 (
-    .literal(cfg_literal), .one20(pin20_one), .inverted(inv7_inverted),
+    .literal(cfg_literal), .a20(pin20_a), .inverted(inv7_inverted),
     .carry34(pin34_carry), .sum(adder8_sum));
   register #(.W(REG9_W)) reg9 (.load(write37), .d(adder8_sum), .q(reg9_q));
 

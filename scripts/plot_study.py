@@ -26,7 +26,9 @@ DPI = 90
 # One colour and one label per lobe, the same in every picture.
 STYLE = {
     "exact": dict(color="black", label="exact cos$^n$"),
-    "device_clamp": dict(color="tab:blue", label="device (clamp)"),
+    "device_clamp": dict(color="tab:blue", label="device, patent constants (clamp)"),
+    "device_minimax_half": dict(color="tab:purple", label="device, minimax-half: s·A (h = ½)"),
+    "device_minimax": dict(color="tab:pink", lw=1.8, label="device, minimax: s·A (h = 41/256)"),
     "device_literal": dict(color="tab:cyan", ls="--", label="device (literal)"),
     "formula_clamp": dict(color="tab:orange", ls=":", label="formula, double (clamp)"),
     "formula_literal": dict(color="tab:brown", ls=":", label="formula, double (literal)"),
@@ -82,7 +84,8 @@ def plot_lobes_and_errors(study, out_dir):
     """error_curves.png (f − cos^n against λ) and lobes.png (the values themselves)."""
     t = read_table(os.path.join(study, "error_curves.csv"))
     ns = sorted(set(int(v) for v in t["n"]))
-    methods = ["device_clamp", "device_literal", "formula_clamp", "schlick", "us5739820"]
+    methods = ["device_clamp", "device_literal", "formula_clamp", "schlick", "us5739820",
+               "device_minimax_half", "device_minimax"]
     columns = 4
     rows = (len(ns) + columns - 1) // columns
     for kind in ("errors", "lobes"):
@@ -100,7 +103,8 @@ def plot_lobes_and_errors(study, out_dir):
                 ax.plot(lam, t["exact"][sel][order], lw=2.2, **STYLE["exact"])
             for m in methods:
                 y = t[m][sel][order] if kind == "lobes" else t[m + "_err"][sel][order]
-                ax.plot(lam, y, lw=1.3, **STYLE[m])
+                style = dict(STYLE[m])
+                ax.plot(lam, y, lw=style.pop("lw", 1.3), **style)
             ax.axvline(zero_lambda, color="grey", lw=0.8, ls="-.")
             ax.axhline(0.0, color="grey", lw=0.5)
             ax.set_xlim(0, right)
@@ -117,7 +121,7 @@ def plot_lobes_and_errors(study, out_dir):
             axes[k // columns][k % columns].axis("off")
         axes[0][0].set_ylabel("f(cos λ) − cos$^n$ λ" if kind == "errors" else "f(cos λ)")
         handles, labels = axes[0][0].get_legend_handles_labels()
-        fig.legend(handles, labels, loc="lower center", ncol=6, fontsize=9)
+        fig.legend(handles, labels, loc="lower center", ncol=4, fontsize=9)
         if kind == "errors":
             fig.suptitle("Error against the exact lobe cos$^n$ λ (device: register 9 after pass 2; "
                          "dash-dot: where the formula crosses 0; the literal curves leave the "
@@ -125,7 +129,7 @@ def plot_lobes_and_errors(study, out_dir):
         else:
             fig.suptitle("The lobes: cos$^n$ λ and its approximations (dash-dot: where "
                          "1 − ½·log2(1 − n·log2 cos λ) crosses 0)", fontsize=11)
-        fig.tight_layout(rect=(0, 0.06, 1, 0.95))
+        fig.tight_layout(rect=(0, 0.08, 1, 0.95))
         save(fig, out_dir, "error_curves.png" if kind == "errors" else "lobes.png")
 
 
@@ -136,14 +140,16 @@ def plot_max_error(study, out_dir):
     fig, (left, middle, right) = plt.subplots(1, 3, figsize=(17, 5),
                                               gridspec_kw={"width_ratios": [1.3, 0.8, 1.1]})
     marker = "." if len(n) < 20 else None
-    for m in ["device_clamp", "formula_clamp", "schlick", "us5739820"]:
-        left.plot(n, t[m + "_max_err"], lw=1.4, marker=marker, **STYLE[m])
+    for m in ["device_clamp", "formula_clamp", "schlick", "us5739820", "device_minimax_half",
+              "device_minimax"]:
+        style = dict(STYLE[m])
+        left.plot(n, t[m + "_max_err"], lw=style.pop("lw", 1.4), marker=marker, **style)
     left.set_xscale("log")
     left.set_ylim(0.0, 0.35)
     left.set_xlabel("n")
     left.set_ylabel("max over cos λ of |f − cos$^n$ λ|")
-    left.set_title("Maximum error against the exact lobe, every n\n"
-                   "(Schlick is exact at n = 1, US 5739820 at n = 4)", fontsize=10)
+    left.set_title("Maximum error against the exact lobe, every n (Schlick exact at n = 1,\n"
+                   "US 5739820 at n = 4; minimax: the same datapath, other constants)", fontsize=10)
     left.grid(alpha=0.3, which="both")
     left.legend(fontsize=9)
 
@@ -258,7 +264,10 @@ def plot_spheres(study, out_dir):
                ("device_patent", "device, patent\n(K = 2π/(n+2))"),
                ("device_energy", "device, energy\n(K = (n+2)/2π)"),
                ("schlick", "Schlick\n(K = 1)"),
-               ("us5739820", "US 5739820\n(K = 1)")]
+               ("us5739820", "US 5739820\n(K = 1)"),
+               ("device_minimax_half", "device, minimax-half\n(s·A, K = 1)"),
+               ("device_minimax", "device, minimax\n(s·A, K = 1)"),
+               ("device_minimax_device_energy", "device, minimax,\ndevice-energy")]
     ns = [1, 10, 100, 1000]
     fig, axes = plt.subplots(len(ns), len(columns), figsize=(2.1 * len(columns), 2.25 * len(ns)))
     for r, n in enumerate(ns):
@@ -384,6 +393,44 @@ def plot_widths(study, out_dir):
     save(fig, out_dir, "widths.png")
 
 
+def plot_constants(study, out_dir):
+    """constants.png: the minimax search's trade-off, and device-energy's integrals."""
+    t = read_table(os.path.join(study, "constants_search.csv"))
+    e = read_table(os.path.join(study, "energy_device_energy.csv"))
+    fig, (left, right) = plt.subplots(1, 2, figsize=(14, 4.8))
+    minimax = t["search"] == "minimax"
+    f = t["F"][minimax]
+    left.plot(f, t["max_error"][minimax], marker="o", color="tab:pink",
+              label="minimax: h on F fraction bits")
+    for name, colour in (("patent", "tab:blue"), ("minimax-half", "tab:purple")):
+        value = t["max_error"][t["search"] == name][0]
+        left.axhline(value, color=colour, ls="--", lw=1.0, label="%s: %.4f" % (name, value))
+    left.axhline(0.203, color="tab:green", ls=":", lw=1.0, label="Schlick: 0.203")
+    left.set_yscale("log")
+    left.set_xlabel("F: fraction bits of pin 19 / multiplexer 4 (multiplier 6 grows by F − 1 bits)")
+    left.set_ylabel("max over x ≥ 0 of |s·A − 2$^{-x}$|")
+    left.set_title("Constants on pins 19/20 by minimax search (peak exact)", fontsize=10)
+    left.grid(alpha=0.3, which="both")
+    left.legend(fontsize=9)
+    for name, colour in (("patent", "tab:blue"), ("minimax-half", "tab:purple"),
+                         ("minimax", "tab:pink")):
+        sel = e["constants"] == name
+        right.plot(e["n"][sel], e["device_energy"][sel] - 1.0, lw=1.2, color=colour,
+                   label="device-energy, constants %s" % name)
+    worst = max(np.max(np.abs(e["device_energy"] - 1.0)), 1e-6)
+    right.set_xscale("log")
+    right.set_ylim(-1.5 * worst, 1.5 * worst)
+    right.set_xlabel("n")
+    right.set_ylabel("equation-6 integral of multiplier 39 − 1")
+    right.set_title("Normalisation device-energy: the device reflects what it receives\n"
+                    "(largest |integral − 1| = %.1e; the bound 0.1 %% is %.0f× off this scale)"
+                    % (worst, 1e-3 / (1.5 * worst)), fontsize=10)
+    right.grid(alpha=0.3, which="both")
+    right.legend(fontsize=9)
+    fig.tight_layout()
+    save(fig, out_dir, "constants.png")
+
+
 def main(argv):
     if len(argv) > 3 or (len(argv) > 1 and argv[1] in ("-h", "--help")):
         sys.stdout.write(__doc__)
@@ -400,6 +447,7 @@ def main(argv):
     plot_heatmaps(study, out_dir)
     plot_spheres(study, out_dir)
     plot_widths(study, out_dir)
+    plot_constants(study, out_dir)
     return 0
 
 

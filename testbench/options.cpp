@@ -22,7 +22,8 @@ const std::map<std::string, std::string>& valued_options() {
       {"--random", "a count in [1, 100000000]"},
       {"--seed", "an unsigned 64-bit integer"},
       {"--model", "one of: " + model_names()},
-      {"--policy", "one of: patent, energy, none"},
+      {"--policy", "one of: patent, energy, none, device-energy"},
+      {"--constants", "one of: patent, minimax-half, minimax"},
       {"--saturation", "one of: clamp, literal"},
       {"--clock-period", "a time, a multiple of 4 ps in [4 ps, 1 ms], e.g. 10ns"},
       {"--vcd", "a file name"},
@@ -105,6 +106,8 @@ Options parse_options(const std::vector<std::string>& args) {
         o.config.normalisation = parse_normalisation(value);
       } else if (option == "--saturation") {
         o.config.saturation = parse_saturation(value);
+      } else if (option == "--constants") {
+        o.config.constants = parse_constants(value);
       } else if (option == "--clock-period") {
         o.clock_period_ps = parse_clock_period_ps(value);
       } else if (option == "--vcd") {
@@ -198,8 +201,16 @@ Model and device:
                             tlm: the TLM-2.0 lt target (docs/tlm.md) through its registers
                             from an initiator thread (1 us quantum); cycles = the START
                             write's annotated delay in periods of --clock-period.
-  --policy patent|energy|none   ROM 38 contents: 2pi/(n+2) (default), (n+2)/(2pi), 1
+  --policy patent|energy|none|device-energy
+                            ROM 38 contents: 2pi/(n+2) (default), (n+2)/(2pi), 1, or
+                            1/I(n), I(n) the equation-6 integral of the device's own lobe
   --saturation clamp|literal    second-pass result: saturate at 0 (default) or keep sign
+  --constants patent|minimax-half|minimax
+                            pins 20 (a), 19 (h) and ROM 38's scale s: the patent's
+                            1, 1/2, 1 (default); minimax-half: a = 1.148987, h = 1/2,
+                            s = 0.953465 (max |s*A - cos^n| 0.0734); minimax: a =
+                            0.373026, h = 41/256, s = 1.664246 (0.0398). The approx
+                            column is register 9, which peaks at 1/s
   --clock-period T          pin 28's period, e.g. 10ns (default), 2500ps, 1us; a multiple
                             of 4 ps (inputs change a quarter period before an edge)
                             in [4 ps, 1 ms]

@@ -62,7 +62,8 @@ std::string clock_text(std::uint64_t ps) {
 std::string header_line(const RunDescription& run) {
   std::ostringstream s;
   s << "model " << run.model << ", normalisation " << to_string(run.config.normalisation)
-    << ", saturation " << to_string(run.config.saturation);
+    << ", saturation " << to_string(run.config.saturation) << ", constants "
+    << to_string(run.config.constants);
   if (run.model == "pin" || run.model == "rtl") s << ", clock " << clock_text(run.clock_period_ps);
   s << ", " << run.operations << " computation(s) from " << run.stimulus;
   return s.str();
@@ -73,6 +74,16 @@ std::string formats_line(const Config& config) {
   std::ostringstream s;
   s << "formats: cos " << f.cos.name() << ", reg9 " << f.reg9.name() << ", ROM 38 "
     << f.rom38.name() << ", norm " << f.norm.name() << ", out " << f.out.name();
+  if (config.constants != Constants::patent) {
+    // What the columns mean when pins 19 and 20 do not carry ½ and 1 (issue 14).
+    const ConstantValues& c = constant_values(config.constants);
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "\nconstants: pin 20 a = %.9f, pin 19 h = %.9f, ROM 38 scale s = %.9f; approx = "
+                  "register 9 = a - h*log2(a - n*log2 cos), peak 1/s = %.6f; norm = s*K(n)*approx",
+                  c.a(), c.h(), c.s(), 1.0 / c.s());
+    s << text;
+  }
   return s.str();
 }
 
@@ -184,7 +195,8 @@ class JsonReport : public Report {
     out_ << "{\n  \"tool\": \"specular_tb\",\n  \"settings\": {\"model\": \"" << run.model
          << "\", \"stimulus\": \"" << escape(run.stimulus) << "\", \"normalisation\": \""
          << to_string(run.config.normalisation) << "\", \"saturation\": \""
-         << to_string(run.config.saturation) << "\", \"clock_period_ps\": " << run.clock_period_ps
+         << to_string(run.config.saturation) << "\", \"constants\": \""
+         << to_string(run.config.constants) << "\", \"clock_period_ps\": " << run.clock_period_ps
          << ", \"operations\": " << run.operations << ",\n    \"formats\": {\"cos\": \""
          << f.cos.name() << "\", \"reg9\": \"" << f.reg9.name() << "\", \"rom38\": \""
          << f.rom38.name() << "\", \"norm\": \"" << f.norm.name() << "\", \"out\": \""

@@ -29,8 +29,8 @@ Comparison Scoreboard::compare(const Stimulus& stimulus, const Result& result,
   const std::array<double, 3> rgb{double(stimulus.rgb[0]), double(stimulus.rgb[1]),
                                   double(stimulus.rgb[2])};
   c.ref = reference::evaluate(cos_q, stimulus.n, rgb, config_.normalisation, config_.saturation,
-                              formats_.cos.frac_bits);
-  c.k = reference::k(stimulus.n, config_.normalisation);
+                              formats_.cos.frac_bits, config_.constants);
+  c.k = reference::k(stimulus.n, config_.normalisation, config_.constants, formats_.cos.frac_bits);
   c.approx = formats_.reg9.to_real(result.reg9_pass2);
   c.norm = formats_.norm.to_real(result.norm39);
   for (int ch = 0; ch < 3; ++ch) c.out[ch] = formats_.out.to_real(result.out[ch]);

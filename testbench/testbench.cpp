@@ -10,6 +10,7 @@
 #include "report.h"
 #include "run_models.h"
 #include "scoreboard.h"
+#include "specular/core.h"
 #include "specular/systemc.h"
 #include "usage_error.h"
 
@@ -61,6 +62,11 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   // Everything that can be wrong with the user's request is found here, before the
   // model is built: the stimuli (a file is read in full) and both output paths.
   const Formats formats(o.config.widths);
+  try {  // a combination of policies the device refuses (ROM 38 or multiplier 39 would saturate)
+    const Core check(o.config);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
   Plan plan = make_plan(o, formats);
   std::optional<AtomicOutputStream> output_file;
   if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");

@@ -16,18 +16,18 @@ void settle() { sc_core::sc_start(1, sc_core::SC_NS); }
 
 TEST(BlockAdder8, OneMinusProductClampedOrLiteral) {
   const Formats f;
-  bus_signal one20{"one20"}, inverted{"inverted"}, clamped{"clamped"}, literal{"literal"};
+  bus_signal a20{"a20"}, inverted{"inverted"}, clamped{"clamped"}, literal{"literal"};
   wire carry34{"carry34", true};
   Adder8 adder8_clamp{"adder8_clamp", f, Saturation::clamp};
   Adder8 adder8_literal{"adder8_literal", f, Saturation::literal};
   for (Adder8* a : {&adder8_clamp, &adder8_literal}) {
-    a->one20(one20);
+    a->a20(a20);
     a->inverted(inverted);
     a->carry34(carry34);
   }
   adder8_clamp.sum(clamped);
   adder8_literal.sum(literal);
-  one20.write(static_cast<code_t>(std::ldexp(1.0, f.reg9.frac_bits)));  // 1.0, pin 20
+  a20.write(static_cast<code_t>(std::ldexp(1.0, f.reg9.frac_bits)));  // 1.0, pin 20
 
   std::mt19937 random(8);
   std::vector<double> products = {0.0, 1.0, 2.0, -1.0, 0.5, -16000.0, 6.5, 13.99, -1e-6};

@@ -2,6 +2,8 @@
 // passes pin 19 (the wired constant ½), both on multiplier 6's operand bus.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "specular/datapath/multiplexer4.h"
 
 namespace specular {
@@ -11,15 +13,15 @@ void settle() { sc_core::sc_start(1, sc_core::SC_NS); }
 
 TEST(BlockMux4, SelectsNThenTheConstantHalf) {
   const Formats f;
-  bus_signal reg2{"reg2"}, half19{"half19"}, operand{"operand"};
+  bus_signal reg2{"reg2"}, h19{"h19"}, operand{"operand"};
   wire select36{"select36"};
   Multiplexer4 mux4{"mux4", f};
   mux4.reg2(reg2);
-  mux4.half19(half19);
+  mux4.h19(h19);
   mux4.select36(select36);
   mux4.operand(operand);
 
-  half19.write(f.half_code());
+  h19.write(std::llround(std::ldexp(0.5, f.mux4.frac_bits)));  // ½, the patent's pin 19
   for (code_t n : {1, 2, 3, 500, 999, 1000, 1023}) {
     reg2.write(n);
     select36.write(false);

@@ -77,6 +77,49 @@ TEST(CliExecutable, BadNExitsTwoWithMessage) {
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
+TEST(CliExecutable, BadConstantsAndPolicyExitTwoNamingTheChoices) {
+  const fs::path dir = scratch("bad_constants");
+  Outcome r = run_tb("--cos 0.5 --n 3 --constants minimax-full", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("'minimax-full' is not one of: patent, minimax-half, minimax"),
+            std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  r = run_tb("--cos 0.5 --n 3 --policy device_energy", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("'device_energy' is not one of: patent, energy, none, device-energy"),
+            std::string::npos) << r.err;
+}
+
+TEST(CliExecutable, ARefusedPolicyCombinationExitsTwoBeforeRunning) {
+  const fs::path dir = scratch("refused_combination");
+  const fs::path target = dir / "out.csv";
+  const Outcome r = run_tb("--cos 0.5 --n 3 --policy device-energy --saturation literal --output '" +
+                               target.string() + "'", dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("saturation literal with normalisation device-energy and constants patent"),
+            std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("use saturation clamp or other constants"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  EXPECT_FALSE(fs::exists(target));
+}
+
+TEST(CliExecutable, ConstantsAndDeviceEnergyRunAndPass) {
+  const fs::path dir = scratch("constants_run");
+  // cos = 1: the device's peak s·A = 1, so under normalisation none with minimax
+  // constants norm ≈ 1 while register 9 (approx) holds 1/s = 0.600873.
+  const Outcome r = run_tb("--cos 1 --n 10 --rgb 255,255,255 --model core --policy none "
+                           "--constants minimax --format csv", dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find(",0.6008"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("PASS"), std::string::npos) << r.err;
+  const Outcome e = run_tb("--sweep --model core --policy device-energy --constants minimax-half", dir);
+  EXPECT_EQ(e.status, 0) << e.err << e.out;
+  EXPECT_NE(e.out.find("constants minimax-half"), std::string::npos) << e.out;
+  // The report says what the columns mean under these constants.
+  EXPECT_NE(e.out.find("pin 20 a = 1.148987293, pin 19 h = 0.500000000, ROM 38 scale s = 0.953465295"),
+            std::string::npos) << e.out;
+}
+
 TEST(CliExecutable, NonNumberAndUnknownOptionExitTwo) {
   const fs::path dir = scratch("bad_text");
   Outcome r = run_tb("--cos 0.5 --n 12abc", dir);
@@ -278,13 +321,14 @@ TEST(CliExecutable, PolicyClockAndEveryFormatToAFile) {
       EXPECT_EQ(field["pass"], "1");
     } else if (format == "json") {
       EXPECT_NE(report.find("\"normalisation\": \"energy\", \"saturation\": \"literal\", "
-                            "\"clock_period_ps\": 2500"),
+                            "\"constants\": \"patent\", \"clock_period_ps\": 2500"),
                 std::string::npos)
           << report;
       EXPECT_NE(report.find("\"cycles\": 2.5"), std::string::npos);
       EXPECT_NE(report.find("\"reg1_hex\": \"0x04000\""), std::string::npos);
     } else {
-      EXPECT_NE(report.find("normalisation energy, saturation literal, clock 2500 ps"), std::string::npos)
+      EXPECT_NE(report.find("normalisation energy, saturation literal, constants patent, clock 2500 ps"),
+                std::string::npos)
           << report;
       EXPECT_NE(report.find("PASS"), std::string::npos);
     }

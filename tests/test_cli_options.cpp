@@ -87,7 +87,7 @@ TEST(CliOptions, HelpNeedsNothingElse) {
   EXPECT_TRUE(parse({"-h"}).help);
   const std::string help = help_text();
   for (const char* option : {"--cos", "--n", "--rgb", "--input", "--sweep", "--random", "--seed",
-                             "--model", "--policy", "--saturation", "--clock-period", "--vcd",
+                             "--model", "--policy", "--saturation", "--constants", "--clock-period", "--vcd",
                              "--real-views", "--format", "--output", "--help", "annotated latency"})
     EXPECT_NE(help.find(option), std::string::npos) << option;
 }
@@ -134,7 +134,11 @@ TEST(CliOptions, UnknownOptionsAndMissingValues) {
 
 TEST(CliOptions, ChoicesNameTheAllowedValues) {
   expect_error({"--sweep", "--model", "gates"}, {"--model", "'gates'", "pin, core, tlm, rtl"});
-  expect_error({"--sweep", "--policy", "phong"}, {"--policy", "'phong'", "patent, energy, none"});
+  expect_error({"--sweep", "--policy", "phong"},
+               {"--policy", "'phong'", "patent, energy, none, device-energy"});
+  expect_error({"--sweep", "--constants", "schlick"},
+               {"--constants", "'schlick'", "patent, minimax-half, minimax"});
+  expect_error({"--sweep", "--constants"}, {"--constants", "needs a value", "minimax-half"});
   expect_error({"--sweep", "--saturation", "wrap"}, {"--saturation", "'wrap'", "clamp, literal"});
   expect_error({"--sweep", "--format", "xml"}, {"--format", "'xml'", "text, csv, json"});
 }

@@ -44,8 +44,8 @@ class DeviceBench : public sc_core::sc_module {
     SPECULAR_HAS_PROCESS(DeviceBench);
     dut.pin17_cos(pin17_cos);
     dut.pin18_n(pin18_n);
-    dut.pin19_half(pin19_half);
-    dut.pin20_one(pin20_one);
+    dut.pin19_h(pin19_h);
+    dut.pin20_a(pin20_a);
     dut.pin21_r(pin21_r);
     dut.pin22_g(pin22_g);
     dut.pin23_b(pin23_b);
@@ -63,8 +63,8 @@ class DeviceBench : public sc_core::sc_module {
     dut.pin35_done(pin35_done);
     // Wired constants (spec §2): ½ on pin 19, 1.0 on pin 20, both in the formats the
     // design note gives (U10.1 and S14.22), written here from those formats.
-    pin19_half.write(std::llround(std::ldexp(0.5, dut.formats().mux4.frac_bits)));
-    pin20_one.write(std::llround(std::ldexp(1.0, dut.formats().reg9.frac_bits)));
+    pin19_h.write(std::llround(std::ldexp(0.5, dut.formats().mux4.frac_bits)));
+    pin20_a.write(std::llround(std::ldexp(1.0, dut.formats().reg9.frac_bits)));
 
     SC_THREAD(run_script);
     SC_METHOD(drive_start);
@@ -105,8 +105,8 @@ class DeviceBench : public sc_core::sc_module {
 
   const sc_time period;
   sc_core::sc_clock clk;
-  bus_signal pin17_cos{"pin17_cos"}, pin18_n{"pin18_n"}, pin19_half{"pin19_half"},
-      pin20_one{"pin20_one"}, pin21_r{"pin21_r"}, pin22_g{"pin22_g"}, pin23_b{"pin23_b"},
+  bus_signal pin17_cos{"pin17_cos"}, pin18_n{"pin18_n"}, pin19_h{"pin19_h"},
+      pin20_a{"pin20_a"}, pin21_r{"pin21_r"}, pin22_g{"pin22_g"}, pin23_b{"pin23_b"},
       pin24_r{"pin24_r"}, pin25_g{"pin25_g"}, pin26_b{"pin26_b"};
   wire pin27_start{"pin27_start"}, pin29_reset_n{"pin29_reset_n", true},
       pin30_load_n{"pin30_load_n"}, pin31_load_r{"pin31_load_r"}, pin32_load_g{"pin32_load_g"},

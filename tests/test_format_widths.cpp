@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "specular/constants.h"
 #include "specular/format.h"
 
 namespace specular {
@@ -30,17 +31,17 @@ TEST(FormatWidths, DefaultsAreTheDesignNotesFormats) {
   EXPECT_EQ(f.cos.name(), "U1.16");
   EXPECT_EQ(f.n.name(), "U10.0");
   EXPECT_EQ(f.rgb.name(), "U8.0");
-  EXPECT_EQ(f.mux4.name(), "U10.1");
+  EXPECT_EQ(f.mux4.name(), "U10.8");  // h = 41/256 under minimax (issue 14)
   EXPECT_EQ(f.log2.name(), "S5.22");
   EXPECT_EQ(f.reg9.name(), "S14.22");
-  EXPECT_EQ(f.rom38.name(), "U8.16");
+  EXPECT_EQ(f.rom38.name(), "U9.16");  // s·(n+2)/(2π) reaches 272
   EXPECT_EQ(f.norm.name(), "S10.20");
   EXPECT_EQ(f.out.name(), "S18.13");
   EXPECT_EQ(f.out.width(), 32);
   EXPECT_EQ(f.rom5_words(), 1 << 15);
   EXPECT_EQ(f.rom5_bits(), 32768L * 22);
   EXPECT_EQ(f.rom38_words(), 1024);
-  EXPECT_EQ(f.rom38_bits(), 1024L * 24);
+  EXPECT_EQ(f.rom38_bits(), 1024L * 25);
 }
 
 TEST(FormatWidths, FixedFormatMapsCodesToReals) {
@@ -63,6 +64,7 @@ TEST(FormatWidths, BusFormatsFollowTheirWidths) {
   w.cos_frac_bits = 12;
   w.n_bits = 11;
   w.rgb_bits = 10;
+  w.pin19_frac_bits = 3;
   w.rom5_addr_bits = 13;
   w.rom5_word_bits = 20;
   w.reg9_int_bits = 15;
@@ -77,7 +79,7 @@ TEST(FormatWidths, BusFormatsFollowTheirWidths) {
   EXPECT_EQ(f.cos.name(), "U1.12");
   EXPECT_EQ(f.n.name(), "U11.0");
   EXPECT_EQ(f.rgb.name(), "U10.0");
-  EXPECT_EQ(f.mux4.name(), "U11.1");
+  EXPECT_EQ(f.mux4.name(), "U11.3");
   EXPECT_EQ(f.reg9.name(), "S15.26");
   EXPECT_EQ(f.rom38.name(), "U9.18");
   EXPECT_EQ(f.norm.name(), "S11.24");
@@ -86,8 +88,10 @@ TEST(FormatWidths, BusFormatsFollowTheirWidths) {
   EXPECT_EQ(f.rom5_words(), 1 << 13);
   EXPECT_EQ(f.rom38_words(), 1 << 11);
   // The wired constants follow the formats they sit on.
-  EXPECT_DOUBLE_EQ(f.mux4.to_real(f.half_code()), 0.5);
-  EXPECT_DOUBLE_EQ(f.reg9.to_real(f.one_code()), 1.0);
+  EXPECT_DOUBLE_EQ(f.mux4.to_real(pin19_code(f, Constants::patent)), 0.5);
+  EXPECT_DOUBLE_EQ(f.reg9.to_real(pin20_code(f, Constants::patent)), 1.0);
+  EXPECT_DOUBLE_EQ(f.reg9.to_real(pin20_code(f, Constants::minimax_half)), 4819202.0 / (1 << 22));
+  EXPECT_THROW(pin19_code(f, Constants::minimax), std::invalid_argument);  // 41/256 needs 8 bits
 }
 
 // ROM 5's output must hold log2 of everything multiplexer 3 can carry: down to the

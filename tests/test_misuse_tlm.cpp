@@ -159,7 +159,7 @@ std::string kind_name(const testing::TestParamInfo<Kind>& info) {
 TEST_P(MisuseTlm, AddressErrorForUnmappedMisalignedAndRunawayBursts) {
   run(GetParam(), [](Initiator& i) {
     for (const std::uint64_t address :
-         {std::uint64_t{0x01C}, std::uint64_t{0x034}, std::uint64_t{0x04C}, std::uint64_t{0x06C},
+         {std::uint64_t{0x01C}, std::uint64_t{0x034}, std::uint64_t{0x04C}, std::uint64_t{0x074},
           std::uint64_t{0x0FC}, std::uint64_t{0x2000}, std::uint64_t{0x7000}, std::uint64_t{0x8000},
           std::uint64_t{0xFFFFFFF0}, std::uint64_t{0x022}, std::uint64_t{0x001},
           std::uint64_t{0x1002}}) {

@@ -27,14 +27,14 @@ class GenericClockBench : public sc_core::sc_module {
   GenericClockBench(sc_core::sc_module_name name, const sc_time& clock_stop, Scenario scenario)
       : sc_module(name), clock_stop_(clock_stop), scenario_(std::move(scenario)) {
     SPECULAR_HAS_PROCESS(GenericClockBench);
-    dut.pin17_cos(pin17);  dut.pin18_n(pin18);  dut.pin19_half(pin19);  dut.pin20_one(pin20);
+    dut.pin17_cos(pin17);  dut.pin18_n(pin18);  dut.pin19_h(pin19);  dut.pin20_a(pin20);
     dut.pin21_r(pin21);    dut.pin22_g(pin22);  dut.pin23_b(pin23);
     dut.pin24_r(pin24);    dut.pin25_g(pin25);  dut.pin26_b(pin26);
     dut.pin27_start(pin27);  dut.pin28_clk(pin28);  dut.pin29_reset_n(pin29);
     dut.pin30_load_n(pin30); dut.pin31_load_r(pin31); dut.pin32_load_g(pin32);
     dut.pin33_load_b(pin33); dut.pin34_carry(pin34); dut.pin35_done(pin35);
-    pin19.write(dut.constant_half19());
-    pin20.write(dut.constant_one20());
+    pin19.write(dut.constant_h19());
+    pin20.write(dut.constant_a20());
     SC_THREAD(drive_clock);
     SC_THREAD(run);
     SC_METHOD(on_done);

@@ -77,7 +77,7 @@ TEST(RtlVcd, TimeUnitScopesAndPatentNames) {
   EXPECT_DOUBLE_EQ(vcd.timescale_seconds, 1e-12);
   EXPECT_TRUE(vcd.scopes.count(dev)) << "the device's scope";
   EXPECT_TRUE(vcd.scopes.count(cu16)) << "control unit 16's scope";
-  for (const char* pin : {"pin17_cos", "pin18_n", "pin19_half", "pin20_one", "pin21_r", "pin22_g",
+  for (const char* pin : {"pin17_cos", "pin18_n", "pin19_h", "pin20_a", "pin21_r", "pin22_g",
                           "pin23_b", "pin24_r", "pin25_g", "pin26_b", "pin27_start", "pin28_clk",
                           "pin29_reset_n", "pin30_load_n", "pin31_load_r", "pin32_load_g",
                           "pin33_load_b", "pin34_carry", "pin35_done"})
@@ -85,9 +85,9 @@ TEST(RtlVcd, TimeUnitScopesAndPatentNames) {
   // Fig. 1: every block's output net, at its bus width, as in the SystemC model.
   const std::vector<std::pair<std::string, int>> buses = {
       {"reg1_q", 17},       {"reg2_q", 10},       {"mux3_address", 37}, {"rom5_log2", 28},
-      {"mux4_operand", 11}, {"mul6_product", 37}, {"inv7_inverted", 37}, {"adder8_sum", 37},
+      {"mux4_operand", 18}, {"mul6_product", 37}, {"inv7_inverted", 37}, {"adder8_sum", 37},
       {"reg9_q", 37},       {"reg10_q", 8},       {"reg11_q", 8},       {"reg12_q", 8},
-      {"rom38_k", 24},      {"mul39_norm", 31},   {"select36", 1},      {"write37", 1}};
+      {"rom38_k", 25},      {"mul39_norm", 31},   {"select36", 1},      {"write37", 1}};
   for (const auto& [name, width] : buses) {
     const Vcd::Var* v = vcd.find(dev + "." + name);
     ASSERT_NE(v, nullptr) << name;

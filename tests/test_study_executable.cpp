@@ -44,34 +44,40 @@ std::vector<std::string> split(const std::string& line) {
 const std::map<std::string, std::string> expected_headers = {
     {"error_curves.csv",
      "n,lambda_deg,cos,exact,device_clamp,device_literal,formula_clamp,formula_literal,schlick,"
-     "us5739820,device_clamp_err,device_literal_err,formula_clamp_err,formula_literal_err,"
-     "schlick_err,us5739820_err"},
+     "us5739820,device_minimax_half,device_minimax,device_clamp_err,device_literal_err,"
+     "formula_clamp_err,formula_literal_err,schlick_err,us5739820_err,device_minimax_half_err,"
+     "device_minimax_err"},
     {"max_error_by_n.csv",
      "n,zero_cos_formula,zero_cos_device,device_clamp_max_err,device_clamp_at_cos,"
      "device_literal_max_err,device_literal_at_cos,formula_clamp_max_err,formula_clamp_at_cos,"
      "formula_literal_max_err,formula_literal_at_cos,schlick_max_err,schlick_at_cos,"
-     "us5739820_max_err,us5739820_at_cos,device_vs_formula_clamp_max,"
+     "us5739820_max_err,us5739820_at_cos,device_minimax_half_max_err,device_minimax_half_at_cos,"
+     "device_minimax_max_err,device_minimax_at_cos,device_vs_formula_clamp_max,"
      "device_vs_formula_clamp_at_cos,device_vs_formula_literal_max,"
      "device_vs_formula_literal_at_cos"},
     {"energy_integrals.csv",
      "n,policy,k,exact_closed_form,exact,formula_clamp,formula_literal,schlick,us5739820,"
      "device_clamp,device_literal"},
+    {"energy_device_energy.csv", "n,constants,rom38_word,device_energy,energy"},
+    {"constants_search.csv",
+     "search,F,extra_mul6_bits,h_code,h,a_code,a,s,max_error,error_above,error_below,boxes,"
+     "evaluations"},
     {"widths.csv",
      "sweep,rom5_addr_bits,rom5_word_bits,reg9_frac_bits,rom38_frac_bits,is_default,rom5_words,"
      "rom5_bits,rom38_bits,max_err_vs_formula,worst_n,worst_cos,max_err_vs_exact,max_norm_err"},
     {"widths_near_one.csv", "rom5_addr_bits,n,cos_code,cos,device,formula,exact"},
     {"sphere_n1.csv",
      "x,y,size,n,cos,n_dot_l,exact,exact_energy,device_none,device_patent,device_energy,"
-     "schlick,us5739820"},
+     "schlick,us5739820,device_minimax_half,device_minimax,device_minimax_device_energy"},
     {"sphere_n10.csv",
      "x,y,size,n,cos,n_dot_l,exact,exact_energy,device_none,device_patent,device_energy,"
-     "schlick,us5739820"},
+     "schlick,us5739820,device_minimax_half,device_minimax,device_minimax_device_energy"},
     {"sphere_n100.csv",
      "x,y,size,n,cos,n_dot_l,exact,exact_energy,device_none,device_patent,device_energy,"
-     "schlick,us5739820"},
+     "schlick,us5739820,device_minimax_half,device_minimax,device_minimax_device_energy"},
     {"sphere_n1000.csv",
      "x,y,size,n,cos,n_dot_l,exact,exact_energy,device_none,device_patent,device_energy,"
-     "schlick,us5739820"},
+     "schlick,us5739820,device_minimax_half,device_minimax,device_minimax_device_energy"},
 };
 const std::vector<std::string> heatmaps = {"heatmap_device_clamp.csv", "heatmap_schlick.csv",
                                            "heatmap_us5739820.csv",
@@ -177,7 +183,7 @@ TEST(StudyExecutable, PlotScriptDrawsEveryPicture) {
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* name : {"error_curves.png", "lobes.png", "max_error_by_n.png",
                            "energy_integrals.png", "energy_policy.png", "heatmap_error.png",
-                           "spheres.png", "widths.png"}) {
+                           "spheres.png", "widths.png", "constants.png"}) {
     const fs::path png = dir / "png" / name;
     ASSERT_TRUE(fs::exists(png)) << name;
     std::ifstream in(png, std::ios::binary);

@@ -34,13 +34,15 @@ TEST(TlmRegisters, IdentificationAndResetValues) {
   run({Kind::lt}, [](TlmBench& b) {
     Endpoint& e = b.at(0);
     EXPECT_EQ(e.read(Reg::id), 0x00059965u) << "UA 59965 U";
-    EXPECT_EQ(e.read(Reg::version), 0x00010000u) << "map version 1.0";
+    EXPECT_EQ(e.read(Reg::version), 0x00010001u) << "map version 1.1";
     // Default device: patent (0), clamp (0), COS U1.16, OUT S18.13, RGB 8 bits.
     EXPECT_EQ(e.read(Reg::config), (8u << 24) | (13u << 16) | (16u << 8));
     EXPECT_EQ(e.read(Reg::status), 0u) << "idle, nothing done, no error";
     EXPECT_EQ(e.read(Reg::control), 0u);
     EXPECT_EQ(e.read(Reg::batch_capacity), 1024u);
     EXPECT_EQ(e.read(Reg::error_address), 0u);
+    EXPECT_EQ(e.read(Reg::pin19_h), 0x80u) << "½ on U10.8";
+    EXPECT_EQ(e.read(Reg::pin20_a), 0x400000u) << "1.0 on S14.22";
     EXPECT_EQ(e.read(Reg::cos), 0u);
     EXPECT_EQ(e.read(Reg::n), 1u) << "n resets to the smallest legal value";
     for (Reg reg : {Reg::r, Reg::g, Reg::b, Reg::out_r, Reg::out_g, Reg::out_b, Reg::reg1,
@@ -74,6 +76,29 @@ TEST(TlmRegisters, ConfigShowsThePoliciesAndIsReadOnly) {
           expect_refused(e, ErrorCause::read_only, offset_of(reg), info(reg).name);
         }
         EXPECT_EQ(e.read(Reg::id), 0x00059965u);
+      },
+      config);
+}
+
+TEST(TlmRegisters, ConstantsAreFixedAtConstructionAndReadable) {
+  Config config;
+  config.constants = Constants::minimax;
+  config.normalisation = Normalisation::device_energy;
+  run(
+      {Kind::lt, Kind::pin},
+      [](TlmBench& b) {
+        for (std::size_t i = 0; i < 2; ++i) {
+          Endpoint& e = b.at(i);
+          // CONFIG[6:5] = 2 (minimax), [1:0] = 3 (device-energy).
+          EXPECT_EQ(e.read(Reg::config), (8u << 24) | (13u << 16) | (16u << 8) | (2u << 5) | 3u);
+          EXPECT_EQ(e.read(Reg::pin19_h), 41u) << "h = 41/256 on U10.8";
+          EXPECT_EQ(e.read(Reg::pin20_a), 1564586u) << "a = 0.373026371 on S14.22";
+          EXPECT_EQ(e.write(Reg::pin19_h, 128), tlm::TLM_COMMAND_ERROR_RESPONSE);
+          expect_refused(e, ErrorCause::read_only, offset_of(Reg::pin19_h), "PIN19_H write");
+          EXPECT_EQ(e.write(Reg::pin20_a, 1), tlm::TLM_COMMAND_ERROR_RESPONSE);
+          expect_refused(e, ErrorCause::read_only, offset_of(Reg::pin20_a), "PIN20_A write");
+          EXPECT_EQ(e.read(Reg::pin19_h), 41u) << "unchanged";
+        }
       },
       config);
 }
@@ -206,7 +231,7 @@ TEST(TlmRegisters, DebugTransportReadsAndWrites) {
     std::uint32_t three[3] = {};
     EXPECT_EQ(e.debug(tlm::TLM_READ_COMMAND, offset_of(Reg::id), three, 12), 12u);
     EXPECT_EQ(three[0], 0x00059965u);
-    EXPECT_EQ(three[1], 0x00010000u);
+    EXPECT_EQ(three[1], 0x00010001u);
     EXPECT_EQ(three[2], (8u << 24) | (13u << 16) | (16u << 8));
 
     std::uint32_t n = 640;

@@ -73,9 +73,9 @@ const std::vector<Shown>& shown_buses() {
   static const std::vector<Shown> buses = {
       {dut + ".reg1_q[16:0]", false, 16},       {dut + ".reg2_q[9:0]", false, 0},
       {dut + ".mux3_address[36:0]", true, 22},  {dut + ".rom5_log2[27:0]", true, 22},
-      {dut + ".mux4_operand[10:0]", false, 1},  {dut + ".mul6_product[36:0]", true, 22},
+      {dut + ".mux4_operand[17:0]", false, 8},  {dut + ".mul6_product[36:0]", true, 22},
       {dut + ".adder8_sum[36:0]", true, 22},    {dut + ".reg9_q[36:0]", true, 22},
-      {dut + ".rom38_k[23:0]", false, 16},      {dut + ".mul39_norm[30:0]", true, 20},
+      {dut + ".rom38_k[24:0]", false, 16},      {dut + ".mul39_norm[30:0]", true, 20},
       {dut + ".reg10_q[7:0]", false, 0},        {dut + ".reg11_q[7:0]", false, 0},
       {dut + ".reg12_q[7:0]", false, 0},        {top + ".pin24_r[31:0]", true, 13},
       {top + ".pin25_g[31:0]", true, 13},       {top + ".pin26_b[31:0]", true, 13}};
@@ -120,7 +120,7 @@ TEST(VcdWaveform, TimeUnitScopesAndPatentNames) {
     EXPECT_TRUE(std::regex_match(v.name, patent_name)) << v.full() << " does not read next to Fig. 1-3";
 
   // Pins 17-35 of the spec, as the SoC side drives and reads them.
-  for (const char* pin : {"pin17_cos", "pin18_n", "pin19_half", "pin20_one", "pin21_r", "pin22_g",
+  for (const char* pin : {"pin17_cos", "pin18_n", "pin19_h", "pin20_a", "pin21_r", "pin22_g",
                           "pin23_b", "pin24_r", "pin25_g", "pin26_b", "pin27_start", "pin28_clk",
                           "pin29_reset_n", "pin30_load_n", "pin31_load_r", "pin32_load_g",
                           "pin33_load_b", "pin34_carry", "pin35_done"})
@@ -128,9 +128,9 @@ TEST(VcdWaveform, TimeUnitScopesAndPatentNames) {
   // Fig. 1: the output net of every block, at its bus width.
   const std::map<std::string, int> buses = {
       {"reg1_q", 17},        {"reg2_q", 10},       {"mux3_address", 37}, {"rom5_log2", 28},
-      {"mux4_operand", 11},  {"mul6_product", 37}, {"inv7_inverted", 37}, {"adder8_sum", 37},
+      {"mux4_operand", 18},  {"mul6_product", 37}, {"inv7_inverted", 37}, {"adder8_sum", 37},
       {"reg9_q", 37},        {"reg10_q", 8},       {"reg11_q", 8},       {"reg12_q", 8},
-      {"rom38_k", 24},       {"mul39_norm", 31}};
+      {"rom38_k", 25},       {"mul39_norm", 31}};
   for (const auto& [name, width] : buses) {
     const auto* v = vcd.find(dut + "." + name);
     ASSERT_NE(v, nullptr) << name;
@@ -153,7 +153,7 @@ TEST(VcdWaveform, RealViewsOnRequestMirrorTheCodes) {
   const Vcd vcd = parse_vcd(slurp(vcd_path));
   const std::vector<std::pair<std::string, std::string>> views = {
       {"reg1_q_real", dut + ".reg1_q[16:0]"},          {"reg9_q_real", dut + ".reg9_q[36:0]"},
-      {"rom38_k_real", dut + ".rom38_k[23:0]"},        {"mul39_norm_real", dut + ".mul39_norm[30:0]"},
+      {"rom38_k_real", dut + ".rom38_k[24:0]"},        {"mul39_norm_real", dut + ".mul39_norm[30:0]"},
       {"pin24_r_real", top + ".pin24_r[31:0]"},        {"pin25_g_real", top + ".pin25_g[31:0]"},
       {"pin26_b_real", top + ".pin26_b[31:0]"}};
   const auto dones = vcd.rises(top + ".pin35_done");
@@ -365,7 +365,7 @@ TEST(VcdWaveform, GtkwaveShowsTheBusesAsRealNumbers) {
                 std::ldexp(1.0, -10) * e.n);  // pass 1: 1 − n·log2 cos_q
     EXPECT_EQ(number(t, dut + ".reg2_q[9:0]"), e.n);
     EXPECT_NEAR(number(t, dut + ".reg9_q[36:0]"), a, std::ldexp(1.0, -10));
-    EXPECT_NEAR(number(t, dut + ".rom38_k[23:0]"), k, std::ldexp(1.0, -16));
+    EXPECT_NEAR(number(t, dut + ".rom38_k[24:0]"), k, std::ldexp(1.0, -16));
     const double norm_bound = std::ldexp(1.0, -10) * std::max(1.0, k);
     EXPECT_NEAR(number(t, dut + ".mul39_norm[30:0]"), k * a, norm_bound);
     const char* pins[3] = {".pin24_r[31:0]", ".pin25_g[31:0]", ".pin26_b[31:0]"};

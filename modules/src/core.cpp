@@ -17,8 +17,7 @@ bool is_default(const Formats& f) {
   return same(f.cos, D::cos) && same(f.n, D::n) && same(f.rgb, D::rgb) && same(f.mux4, D::mux4) &&
          same(f.log2, D::log2) && same(f.reg9, D::reg9) && same(f.rom38, D::rom38) &&
          same(f.norm, D::norm) && same(f.out, D::out) &&
-         f.widths.rom5_addr_bits == D::widths.rom5_addr_bits &&
-         f.half_code() == D::half_code() && f.one_code() == D::one_code();
+         f.widths.rom5_addr_bits == D::widths.rom5_addr_bits;
 }
 }  // namespace
 
@@ -28,8 +27,10 @@ Core::Core(const Config& config)
       cos_bits_(formats_.cos.width()),
       n_bits_(formats_.n.width()),
       rgb_bits_(formats_.rgb.width()),
+      pin19_(pin19_code(formats_, config.constants)),
+      pin20_(pin20_code(formats_, config.constants)),
       rom5_(formats_),
-      rom38_(formats_, config.normalisation),
+      rom38_(formats_, config),
       default_formats_(is_default(formats_)) {}
 
 void Core::refuse(const Operands& in) const {

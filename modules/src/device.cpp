@@ -8,7 +8,7 @@ SpecularDevice::SpecularDevice(sc_core::sc_module_name name, const Config& confi
       config_(config),
       formats_(config.widths),
       rom5_table_(formats_),
-      rom38_table_(formats_, config.normalisation),
+      rom38_table_(formats_, config),
       mux3("mux3", formats_),
       mux4("mux4", formats_),
       rom5("rom5", rom5_table_),
@@ -29,11 +29,11 @@ SpecularDevice::SpecularDevice(sc_core::sc_module_name name, const Config& confi
 
   // The two-pass loop: multiplexers → ROM 5 → multiplier 6 → inverter 7 → adder 8 → register 9.
   mux3.reg1(reg1_q);  mux3.reg9(reg9_q);  mux3.select36(select36);  mux3.address(mux3_address);
-  mux4.reg2(reg2_q);  mux4.half19(pin19_half);  mux4.select36(select36);  mux4.operand(mux4_operand);
+  mux4.reg2(reg2_q);  mux4.h19(pin19_h);  mux4.select36(select36);  mux4.operand(mux4_operand);
   rom5.address(mux3_address);  rom5.log2(rom5_log2);
   mul6.log2(rom5_log2);  mul6.operand(mux4_operand);  mul6.product(mul6_product);
   inv7.product(mul6_product);  inv7.inverted(inv7_inverted);
-  adder8.one20(pin20_one);  adder8.inverted(inv7_inverted);  adder8.carry34(pin34_carry);
+  adder8.a20(pin20_a);  adder8.inverted(inv7_inverted);  adder8.carry34(pin34_carry);
   adder8.sum(adder8_sum);
   reg9.d(adder8_sum);  reg9.load(write37);  reg9.q(reg9_q);
 

@@ -16,6 +16,7 @@ const char* to_string(Normalisation policy) {
     case Normalisation::patent: return "patent";
     case Normalisation::energy: return "energy";
     case Normalisation::none: return "none";
+    case Normalisation::device_energy: return "device-energy";
   }
   return "?";
 }
@@ -24,12 +25,30 @@ const char* to_string(Saturation policy) {
   return policy == Saturation::clamp ? "clamp" : "literal";
 }
 
+const char* to_string(Constants policy) {
+  switch (policy) {
+    case Constants::patent: return "patent";
+    case Constants::minimax_half: return "minimax-half";
+    case Constants::minimax: return "minimax";
+  }
+  return "?";
+}
+
 Normalisation parse_normalisation(const std::string& text) {
   if (text == "patent") return Normalisation::patent;
   if (text == "energy") return Normalisation::energy;
   if (text == "none") return Normalisation::none;
+  if (text == "device-energy") return Normalisation::device_energy;
   throw std::invalid_argument("normalisation policy '" + text +
-                              "' is not one of: patent, energy, none");
+                              "' is not one of: patent, energy, none, device-energy");
+}
+
+Constants parse_constants(const std::string& text) {
+  if (text == "patent") return Constants::patent;
+  if (text == "minimax-half") return Constants::minimax_half;
+  if (text == "minimax") return Constants::minimax;
+  throw std::invalid_argument("constants policy '" + text +
+                              "' is not one of: patent, minimax-half, minimax");
 }
 
 Saturation parse_saturation(const std::string& text) {
@@ -53,6 +72,7 @@ void Widths::validate() const {
   check_width("cos_frac_bits", cos_frac_bits, 2, 30);
   check_width("n_bits", n_bits, 10, 16);  // must hold n = 1000
   check_width("rgb_bits", rgb_bits, 1, 16);
+  check_width("pin19_frac_bits", pin19_frac_bits, 1, 16);
   check_width("rom5_addr_bits", rom5_addr_bits, 1, 24);
   check_width("rom5_word_bits", rom5_word_bits, 1, 31);
   check_width("reg9_int_bits", reg9_int_bits, 3, 20);
@@ -83,7 +103,7 @@ Formats::Formats(const Widths& w) : widths(w) {
   cos = {false, 1, w.cos_frac_bits};
   n = {false, w.n_bits, 0};
   rgb = {false, w.rgb_bits, 0};
-  mux4 = {false, w.n_bits, 1};
+  mux4 = {false, w.n_bits, w.pin19_frac_bits};
   // ROM 5's exponent spans −F (log2 0, spec Decision; and the smallest register-9
   // code, −reg9_frac_bits) up to reg9_int_bits − 1.
   log2 = {true, bits_for(std::max(w.reg9_frac_bits, w.reg9_int_bits)), w.rom5_word_bits};

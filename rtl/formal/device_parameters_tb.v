@@ -6,7 +6,7 @@
 
 module device_parameters_tb;
   specular_device #(.ROM5_WORD_BITS(`ROM5_WORD_BITS), .REG9_FRAC(`REG9_FRAC)) dut (
-    .pin17_cos(), .pin18_n(), .pin19_half(), .pin20_one(), .pin21_r(), .pin22_g(), .pin23_b(),
+    .pin17_cos(), .pin18_n(), .pin19_h(), .pin20_a(), .pin21_r(), .pin22_g(), .pin23_b(),
     .pin24_r(), .pin25_g(), .pin26_b(), .pin27_start(), .pin28_clk(), .pin29_reset_n(),
     .pin30_load_n(), .pin31_load_r(), .pin32_load_g(), .pin33_load_b(), .pin34_carry(),
     .pin35_done(), .cfg_literal(), .cfg_rom38_bank(), .obs_select36(), .obs_write37(),

@@ -17,12 +17,15 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "specular/arith.h"
+#include "specular/twin/rom38_banks.h"
+#include "specular/constants.h"
 #include "specular/format.h"
 
 namespace {
@@ -32,10 +35,25 @@ using specular::Formats;
 using specular::Normalisation;
 using specular::Widths;
 
-/// ROM 38's banks, in bank order: bank b holds the policy whose enum value is b (the
-/// RTL's cfg_rom38_bank input). A new normalisation is one more entry here.
-const Normalisation kRom38Banks[] = {Normalisation::patent, Normalisation::energy,
-                                     Normalisation::none};
+/// ROM 38's banks: one per (constants, normalisation) pair, at rom38_bank() (the RTL's
+/// cfg_rom38_bank input; specular/twin/rom38_banks.h). A pair whose table the device
+/// refuses (a word ROM 38 cannot hold) leaves its bank zero, as unused banks are.
+std::vector<std::optional<specular::arith::Rom38Table>> rom38_banks(const Formats& f, int bank_bits) {
+  std::vector<std::optional<specular::arith::Rom38Table>> banks(std::size_t{1} << bank_bits);
+  for (const specular::Constants constants : specular::every_constants)
+    for (const Normalisation normalisation : specular::every_normalisation) {
+      specular::Config config;
+      config.widths = f.widths;
+      config.normalisation = normalisation;
+      config.constants = constants;
+      try {
+        banks.at(specular::rom38_bank(config)).emplace(f, config);
+      } catch (const std::invalid_argument&) {
+        // refused by the device too (Rom38Table's message names why)
+      }
+    }
+  return banks;
+}
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -84,7 +102,7 @@ void set_width(Widths& widths, const std::string& assignment) {
 
 struct Options {
   Widths widths;
-  int bank_bits = 2;
+  int bank_bits = specular::rom38_bank_bits;
   std::string out_dir;
   std::string check_path;
 };
@@ -105,11 +123,10 @@ Options parse(int argc, char** argv) {
   }
   if (o.out_dir.empty() == o.check_path.empty())
     throw UsageError("give exactly one of --out-dir DIR or --check DUMP");
-  const int banks = static_cast<int>(std::size(kRom38Banks));
-  if (o.bank_bits < 1 || o.bank_bits > 8 || (1 << o.bank_bits) < banks)
+  if (o.bank_bits < specular::rom38_bank_bits || o.bank_bits > 8)
     throw UsageError("--bank-bits = " + std::to_string(o.bank_bits) + " is outside the allowed range [" +
-                     std::to_string(banks <= 2 ? 1 : (banks <= 4 ? 2 : 3)) + ", 8] (" +
-                     std::to_string(banks) + " normalisation banks)");
+                     std::to_string(specular::rom38_bank_bits) + ", 8] (one bank per constants x " +
+                     "normalisation pair)");
   try {
     o.widths.validate();
   } catch (const std::invalid_argument& e) {
@@ -144,20 +161,41 @@ void write_images(const Options& o) {
 
   const std::size_t bank_words = static_cast<std::size_t>(f.rom38_words());
   words.assign(bank_words << o.bank_bits, 0);
-  std::string banks;
-  for (std::size_t b = 0; b < std::size(kRom38Banks); ++b) {
-    const Normalisation policy = kRom38Banks[b];
-    if (static_cast<std::size_t>(policy) != b) throw std::logic_error("ROM 38 bank order != enum order");
-    const specular::arith::Rom38Table table(f, policy);
+  const auto tables = rom38_banks(f, o.bank_bits);
+  int filled = 0;
+  for (std::size_t b = 0; b < tables.size(); ++b) {
+    if (!tables[b]) continue;
+    ++filled;
     for (std::size_t n = 0; n < bank_words; ++n)
-      words[b * bank_words + n] = static_cast<std::uint64_t>(table.words()[n]);
-    banks += std::string(b ? ", " : "") + std::to_string(b) + " " + specular::to_string(policy);
+      words[b * bank_words + n] = static_cast<std::uint64_t>(tables[b]->words()[n]);
   }
   write_image(o.out_dir + "/rom38.hex",
-              "ROM 38 K(n): " + std::to_string(1 << o.bank_bits) + " banks (" + banks +
-                  ", others zero) x " + std::to_string(bank_words) + " words x " +
-                  f.rom38.name(),
+              "ROM 38 s*K(n): " + std::to_string(1 << o.bank_bits) + " banks (bank = 4 * constants + " +
+                  "normalisation; " + std::to_string(filled) + " filled, others zero) x " +
+                  std::to_string(bank_words) + " words x " + f.rom38.name(),
               f.rom38.width(), words);
+
+  // Pins 19 (h) and 20 (a) per constants policy, for testbenches that tie them off as
+  // the pin harness does: word 2c = h, word 2c + 1 = a of Constants value c (zero when
+  // the bus cannot hold the constant; the device refuses that policy then).
+  words.clear();
+  for (const specular::Constants constants : specular::every_constants) {
+    if (words.size() != 2 * static_cast<std::size_t>(constants)) throw std::logic_error("constants order");
+    std::uint64_t h = 0, a = 0;
+    try {
+      h = static_cast<std::uint64_t>(specular::pin19_code(f, constants)) &
+          ((std::uint64_t{1} << f.mux4.width()) - 1);
+      a = static_cast<std::uint64_t>(specular::pin20_code(f, constants)) &
+          ((std::uint64_t{1} << f.reg9.width()) - 1);
+    } catch (const std::invalid_argument&) {
+    }
+    words.push_back(h);
+    words.push_back(a);
+  }
+  write_image(o.out_dir + "/pins.hex",
+              "pins 19 (h, " + f.mux4.name() + ") and 20 (a, " + f.reg9.name() +
+                  "): words 2c, 2c+1 for Constants value c",
+              64, words);
 }
 
 std::uint64_t parse_hex(const std::string& text, const std::string& where) {
@@ -180,8 +218,7 @@ code_t as_code(std::uint64_t bits, const specular::FixedFormat& format) {
 int check_dump(const Options& o) {
   const Formats f(o.widths);
   const specular::arith::Rom5Table rom5(f);
-  std::vector<specular::arith::Rom38Table> rom38;
-  for (Normalisation policy : kRom38Banks) rom38.emplace_back(f, policy);
+  const auto rom38 = rom38_banks(f, o.bank_bits);
   const std::size_t bank_words = static_cast<std::size_t>(f.rom38_words());
   const std::size_t rom38_total = bank_words << o.bank_bits;
 
@@ -215,7 +252,7 @@ int check_dump(const Options& o) {
       const code_t got = as_code(parse_hex(c, where), f.rom38);
       if (bank >= (std::size_t{1} << o.bank_bits) || n >= bank_words)
         throw UsageError(where + ": ROM 38 address out of range");
-      const code_t want = bank < rom38.size() ? rom38[bank].k(static_cast<code_t>(n)) : 0;
+      const code_t want = rom38[bank] ? rom38[bank]->k(static_cast<code_t>(n)) : 0;
       if (got != want) {
         std::cerr << where << ": ROM 38 bank " << bank << " n " << n << " gave " << got
                   << ", the table " << want << '\n';

@@ -11,7 +11,7 @@ module rom_read_tb;
   parameter COS_FRAC = 16, N_BITS = 10;
   parameter ROM5_ADDR_BITS = 15, ROM5_WORD_BITS = 22;
   parameter REG9_INT = 14, REG9_FRAC = 22;
-  parameter ROM38_INT = 8, ROM38_FRAC = 16, ROM38_BANK_BITS = 2;
+  parameter ROM38_INT = 9, ROM38_FRAC = 16, ROM38_BANK_BITS = 4;
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex", DUMP = "rom_dump.txt";
   parameter RANDOM_BUSES = 4000;
 

@@ -23,15 +23,17 @@ foreach(group IN LISTS groups)
 endforeach()
 file(WRITE ${SCRATCH}/stimulus.csv "${stimulus}")
 
-string(LENGTH "${POLICY}${SATURATION}" seed)  # a different random draw per combination
-math(EXPR seed "${seed} * 7 + ${BANK}")
-execute_process(COMMAND ${SPECULAR_TB} --policy ${POLICY} --saturation ${SATURATION}
+# A different random draw per combination.
+string(LENGTH "${SATURATION}" seed)
+math(EXPR seed "${seed} * 16 + ${CONSTANTS_VALUE} * 4 + ${NORMALISATION_VALUE}")
+set(policy_options --constants ${CONSTANTS} --policy ${NORMALISATION} --saturation ${SATURATION})
+execute_process(COMMAND ${SPECULAR_TB} ${policy_options}
                         --input ${SCRATCH}/stimulus.csv --format csv --output ${SCRATCH}/groups.csv
                 RESULT_VARIABLE status ERROR_VARIABLE summary)
 if(NOT status MATCHES "^[01]$")  # 1: a value outside the reference's tolerance (literal)
   message(FATAL_ERROR "specular_tb --input failed (status ${status}): ${summary}")
 endif()
-execute_process(COMMAND ${SPECULAR_TB} --policy ${POLICY} --saturation ${SATURATION}
+execute_process(COMMAND ${SPECULAR_TB} ${policy_options}
                         --random 300 --seed ${seed} --format csv --output ${SCRATCH}/random.csv
                 RESULT_VARIABLE status ERROR_VARIABLE summary)
 if(NOT status MATCHES "^[01]$")
@@ -70,7 +72,10 @@ execute_process(
           "-Pspecular_device_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
           "-Pspecular_device_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
           "-Pspecular_device_tb.VECTORS=\"${SCRATCH}/vectors.csv\""
-          -Pspecular_device_tb.LITERAL=${literal} -Pspecular_device_tb.BANK=${BANK}
+          "-Pspecular_device_tb.PINS_IMAGE=\"${ROM_DIR}/pins.hex\""
+          -Pspecular_device_tb.LITERAL=${literal}
+          -Pspecular_device_tb.CONSTANTS=${CONSTANTS_VALUE}
+          -Pspecular_device_tb.NORMALISATION=${NORMALISATION_VALUE}
           ${SOURCES} ${TESTBENCH}
   RESULT_VARIABLE status)
 if(NOT status EQUAL 0)

@@ -14,28 +14,36 @@
 //     the control unit idle (Q41 = Q42 = select 36 = write 37 = 0, NAND 45 = 1) during
 //     and after the reset, and the next operation correct.
 // Stops with $fatal (non-zero exit) on the first mismatch. The policy reaches the
-// device through its configuration inputs (LITERAL, BANK parameters).
+// device as the twin's wrapper ties it: pins 19, 20 (CONSTANTS) and the configuration
+// inputs cfg_rom38_bank (4 * CONSTANTS + NORMALISATION) and cfg_literal (LITERAL).
 `default_nettype none
 `timescale 1ns / 1ps
 
 module specular_device_tb;
   parameter VECTORS = "vectors.csv";
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
+  parameter PINS_IMAGE = "pins.hex";  // pins 19, 20 per constants policy (specular_romgen)
   parameter LITERAL = 0;        // 1: Saturation::literal
-  parameter BANK = 0;           // ROM 38 bank: Normalisation enum value
+  parameter CONSTANTS = 0;      // Constants enum value: pins 19, 20 and ROM 38's bank
+  parameter NORMALISATION = 0;  // Normalisation enum value: ROM 38's bank
   parameter real T = 10.0;      // clock period (ns)
   parameter RESET_EVERY = 17;
   parameter MAX_VECTORS = 8192;
 
   // Default widths (docs/design.md), as specular_tb uses them.
-  localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 1;
-  localparam REG9_W = 37, REG9_FRAC = 22, OUT_W = 32;
+  localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 8;
+  localparam REG9_W = 37, REG9_FRAC = 22, OUT_W = 32, ROM38_W = 25, NORM_W = 31;
+  localparam BANK_BITS = 4;     // bank = 4 * constants + normalisation (twin/rom38_banks.h)
 
   // ---- device ----
   reg  [COS_FRAC:0]           pin17_cos = 0;
   reg  [N_BITS-1:0]           pin18_n = 0;
-  wire [N_BITS+MUX4_FRAC-1:0] pin19_half = 1 << (MUX4_FRAC - 1);
-  wire [REG9_W-1:0]           pin20_one = {{(REG9_W-1){1'b0}}, 1'b1} << REG9_FRAC;
+  // Pins 19 (h) and 20 (a): wired constants of the constants policy, as the harness
+  // ties them (codes written by specular_romgen from constants.cpp).
+  reg  [63:0]                 pin_codes [0:5];
+  initial $readmemh(PINS_IMAGE, pin_codes);
+  wire [N_BITS+MUX4_FRAC-1:0] pin19_h = pin_codes[2 * CONSTANTS][N_BITS+MUX4_FRAC-1:0];
+  wire [REG9_W-1:0]           pin20_a = pin_codes[2 * CONSTANTS + 1][REG9_W-1:0];
   reg  [RGB_BITS-1:0]         pin21_r = 0, pin22_g = 0, pin23_b = 0;
   wire [OUT_W-1:0]            pin24_r, pin25_g, pin26_b;
   reg  pin27_start = 0, pin28_clk = 0, pin29_reset_n = 0;
@@ -45,13 +53,13 @@ module specular_device_tb;
   wire obs_select36, obs_write37, obs_q41, obs_q42, obs_nand45;
   wire [COS_FRAC:0]  obs_reg1_q;
   wire [REG9_W-1:0]  obs_reg9_q;
-  wire [23:0]        obs_rom38_k;
-  wire [30:0]        obs_mul39_norm;
+  wire [ROM38_W-1:0] obs_rom38_k;
+  wire [NORM_W-1:0]  obs_mul39_norm;
   wire               cfg_literal = LITERAL;
-  wire [1:0]         cfg_rom38_bank = BANK;
+  wire [BANK_BITS-1:0] cfg_rom38_bank = 4 * CONSTANTS + NORMALISATION;
 
   specular_device #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
-    .pin17_cos(pin17_cos), .pin18_n(pin18_n), .pin19_half(pin19_half), .pin20_one(pin20_one),
+    .pin17_cos(pin17_cos), .pin18_n(pin18_n), .pin19_h(pin19_h), .pin20_a(pin20_a),
     .pin21_r(pin21_r), .pin22_g(pin22_g), .pin23_b(pin23_b),
     .pin24_r(pin24_r), .pin25_g(pin25_g), .pin26_b(pin26_b),
     .pin27_start(pin27_start), .pin28_clk(pin28_clk), .pin29_reset_n(pin29_reset_n),

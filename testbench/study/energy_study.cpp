@@ -80,5 +80,37 @@ std::vector<EnergyRow> run_energy_study(const StudyOptions& options) {
   return rows;
 }
 
+std::vector<DeviceEnergyRow> run_device_energy_study(const StudyOptions& options) {
+  constexpr std::array<Constants, 3> constants = {Constants::patent, Constants::minimax_half,
+                                                  Constants::minimax};
+  std::vector<Core> cores;  // per constants: device-energy, energy
+  for (Constants c : constants) {
+    cores.emplace_back(Config{Widths{}, Normalisation::device_energy, Saturation::clamp, c});
+    cores.emplace_back(Config{Widths{}, Normalisation::energy, Saturation::clamp, c});
+  }
+  const std::vector<unsigned> ns = options.n_values();
+  std::vector<DeviceEnergyRow> rows(ns.size() * constants.size());
+  parallel_for("device-energy integrals (equation 6, every constants policy)", ns.size(),
+               options.workers, [&](std::size_t item, unsigned) {
+    for (std::size_t c = 0; c < constants.size(); ++c) {
+      DeviceEnergyRow& row = rows[item * constants.size() + c];
+      row.n = ns[item];
+      row.constants = constants[c];
+      const Core& device_energy = cores[2 * c];
+      row.rom38_word = device_energy.formats().rom38.to_real(device_energy.rom38().k(row.n));
+      row.device_energy = device_integral(device_energy, row.n);
+      row.energy = device_integral(cores[2 * c + 1], row.n);
+    }
+  });
+  CsvWriter csv(options.out_dir + "/energy_device_energy.csv",
+                {"n", "constants", "rom38_word", "device_energy", "energy"});
+  for (const DeviceEnergyRow& row : rows) {
+    csv.cell(static_cast<long long>(row.n)).cell(std::string(to_string(row.constants)));
+    csv.cell(row.rom38_word).cell(row.device_energy).cell(row.energy);
+    csv.end_row();
+  }
+  return rows;
+}
+
 }  // namespace study
 }  // namespace specular

@@ -40,5 +40,19 @@ struct EnergyRow {
 /// returns the rows.
 std::vector<EnergyRow> run_energy_study(const StudyOptions& options);
 
+/// One row of energy_device_energy.csv: normalisation device-energy (issue 14) and,
+/// beside it, `energy`, under one constants policy, for one n.
+struct DeviceEnergyRow {
+  unsigned n = 0;
+  Constants constants = Constants::patent;
+  double rom38_word = 0;     ///< ROM 38's word 1/I(n) under device-energy, as a real
+  double device_energy = 0;  ///< equation-6 integral of multiplier 39 under device-energy
+  double energy = 0;         ///< the same under `energy`, s·(n+2)/(2π)
+};
+
+/// Writes energy_device_energy.csv (every n × the three constants policies; the
+/// device clamps) and returns the rows.
+std::vector<DeviceEnergyRow> run_device_energy_study(const StudyOptions& options);
+
 }  // namespace study
 }  // namespace specular

@@ -18,10 +18,12 @@ namespace {
 
 constexpr double degrees = 57.295779513082320876798154814105;
 
-Config device_config(const Widths& widths, Saturation saturation) {
+Config device_config(const Widths& widths, Saturation saturation,
+                     Constants constants = Constants::patent) {
   Config config;
   config.widths = widths;
   config.saturation = saturation;
+  config.constants = constants;
   config.normalisation = Normalisation::none;  // the study reads A, ahead of ROM 38
   return config;
 }
@@ -77,6 +79,8 @@ const char* method_name(Method method) {
     case Method::formula_literal: return "formula_literal";
     case Method::schlick: return "schlick";
     case Method::us5739820: return "us5739820";
+    case Method::device_minimax_half: return "device_minimax_half";
+    case Method::device_minimax: return "device_minimax";
   }
   return "?";
 }
@@ -93,7 +97,9 @@ MaxError max_abs_difference(const std::vector<double>& f, const std::vector<doub
 
 LobeEvaluator::LobeEvaluator(const Widths& widths)
     : clamp_(device_config(widths, Saturation::clamp)),
-      literal_(device_config(widths, Saturation::literal)) {}
+      literal_(device_config(widths, Saturation::literal)),
+      minimax_half_(device_config(widths, Saturation::clamp, Constants::minimax_half)),
+      minimax_(device_config(widths, Saturation::clamp, Constants::minimax)) {}
 
 LobeTables LobeEvaluator::tables(unsigned n) const {
   const Formats& f = clamp_.formats();
@@ -110,6 +116,11 @@ LobeTables LobeEvaluator::tables(unsigned n) const {
       device_table(clamp_, n, DeviceValue::approx);
   t.values[static_cast<std::size_t>(Method::device_literal)] =
       device_table(literal_, n, DeviceValue::approx);
+  // s·A: what multiplier 39 gives with K = 1, the device's own approximation of cos^n.
+  t.values[static_cast<std::size_t>(Method::device_minimax_half)] =
+      device_table(minimax_half_, n, DeviceValue::normalised);
+  t.values[static_cast<std::size_t>(Method::device_minimax)] =
+      device_table(minimax_, n, DeviceValue::normalised);
   const int bits = f.cos.frac_bits;
   for (std::size_t c = 0; c < codes; ++c) {
     const double cos = f.cos.to_real(static_cast<code_t>(c));

@@ -25,11 +25,14 @@ enum class Method {
   formula_literal,  ///< the same, unclamped
   schlick,          ///< t/(n − n·t + t)
   us5739820,        ///< max(0, 1 − n·(1 − t)/4)^4
+  device_minimax_half,  ///< the device under constants minimax-half: s·A (multiplier 39, K = 1)
+  device_minimax,       ///< the device under constants minimax: s·A (multiplier 39, K = 1)
 };
-constexpr std::size_t method_count = 6;
+constexpr std::size_t method_count = 8;
 constexpr std::array<Method, method_count> all_methods = {
     Method::device_clamp, Method::device_literal, Method::formula_clamp,
-    Method::formula_literal, Method::schlick, Method::us5739820};
+    Method::formula_literal, Method::schlick, Method::us5739820,
+    Method::device_minimax_half, Method::device_minimax};
 const char* method_name(Method method);
 
 /// Every method's value, and the exact lobe, at every cos code for one n.
@@ -51,7 +54,8 @@ struct MaxError {
 MaxError max_abs_difference(const std::vector<double>& f, const std::vector<double>& g,
                             const std::vector<double>& cos);
 
-/// Builds LobeTables; the device's values come from two Cores (clamp and literal).
+/// Builds LobeTables; the device's values come from Cores: clamp and literal under the
+/// patent's constants, and multiplier 39 (normalisation none) under the two minimax ones.
 class LobeEvaluator {
  public:
   explicit LobeEvaluator(const Widths& widths = Widths{});
@@ -63,6 +67,8 @@ class LobeEvaluator {
  private:
   Core clamp_;
   Core literal_;
+  Core minimax_half_;
+  Core minimax_;
 };
 
 /// The smallest cos at which the device's literal result is ≥ 0, with every smaller

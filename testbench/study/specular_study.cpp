@@ -3,6 +3,7 @@
 // and justifies the fixed-point widths. Writes CSV files; scripts/plot_study.py draws
 // them; docs/study.md reads them. Progress goes to stderr, a summary to stdout and to
 // <out>/summary.txt.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -10,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "constants_search.h"
 #include "csv.h"
 #include "energy_study.h"
 #include "error_study.h"
@@ -23,6 +25,7 @@ using namespace specular::study;
 namespace {
 
 std::string summarise(const ErrorSummary& errors, const std::vector<EnergyRow>& energy,
+                      const std::vector<DeviceEnergyRow>& device_energy,
                       const std::vector<WidthResult>& widths, double seconds) {
   std::ostringstream s;
   char line[256];
@@ -45,6 +48,20 @@ std::string summarise(const ErrorSummary& errors, const std::vector<EnergyRow>& 
     std::snprintf(line, sizeof line, "  %-7s %-5u  %-9.4g  %-9.4g  %-9.4g  %-9.4g  %-9.4g\n",
                   to_string(row.policy), row.n, row.scaled.exact, row.scaled.formula_clamp,
                   row.device_clamp, row.scaled.schlick, row.scaled.us5739820);
+    s << line;
+  }
+
+  s << "Normalisation device-energy: equation-6 integral of multiplier 39, every n visited:\n";
+  for (Constants c : {Constants::patent, Constants::minimax_half, Constants::minimax}) {
+    double lo = 1e9, hi = -1e9, energy_lo = 1e9, energy_hi = -1e9;
+    for (const DeviceEnergyRow& row : device_energy) {
+      if (row.constants != c) continue;
+      lo = std::min(lo, row.device_energy), hi = std::max(hi, row.device_energy);
+      energy_lo = std::min(energy_lo, row.energy), energy_hi = std::max(energy_hi, row.energy);
+    }
+    std::snprintf(line, sizeof line,
+                  "  constants %-12s device-energy %.6f ... %.6f   (energy: %.4f ... %.4f)\n",
+                  to_string(c), lo, hi, energy_lo, energy_hi);
     s << line;
   }
 
@@ -87,15 +104,18 @@ int main(int argc, char** argv) {
     make_directory(options.out_dir);
     std::cerr << "specular_study: writing to " << options.out_dir
               << (options.quick ? " (quick mode)" : "") << "\n";
+    std::cerr << "constants search (specular_constants)\n";
+    write_constants_csv(constants_table(16), options.out_dir + "/constants_search.csv");
     const ErrorSummary errors = run_error_study(options);
     const std::vector<EnergyRow> energy = run_energy_study(options);
+    const std::vector<DeviceEnergyRow> device_energy = run_device_energy_study(options);
     const std::vector<WidthResult> widths = run_width_study(options);
     std::cerr << "sphere renders\n";
     run_sphere_study(options);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const std::string summary = summarise(errors, energy, widths, seconds);
+    const std::string summary = summarise(errors, energy, device_energy, widths, seconds);
     std::cout << summary;
     std::ofstream file(options.out_dir + "/summary.txt");
     file << summary;

@@ -51,19 +51,25 @@ void run_sphere_study(const StudyOptions& options) {
                                                  Normalisation::energy};
   std::vector<Core> cores;
   for (Normalisation policy : policies) cores.emplace_back(Config{Widths{}, policy, Saturation::clamp});
+  // Issue 14: s·A under the two minimax constants, and device-energy under minimax.
+  std::vector<Core> minimax;
+  minimax.emplace_back(Config{Widths{}, Normalisation::none, Saturation::clamp, Constants::minimax_half});
+  minimax.emplace_back(Config{Widths{}, Normalisation::none, Saturation::clamp, Constants::minimax});
+  minimax.emplace_back(Config{Widths{}, Normalisation::device_energy, Saturation::clamp, Constants::minimax});
   const Formats& formats = cores.front().formats();
 
   for (unsigned n : StudyOptions::sphere_n_values()) {
     CsvWriter csv(options.out_dir + "/sphere_n" + std::to_string(n) + ".csv",
                   {"x", "y", "size", "n", "cos", "n_dot_l", "exact", "exact_energy", "device_none",
-                   "device_patent", "device_energy", "schlick", "us5739820"});
+                   "device_patent", "device_energy", "schlick", "us5739820", "device_minimax_half",
+                   "device_minimax", "device_minimax_device_energy"});
     for (const SpherePixel& p : pixels) {
       const double cos = p.cos_lambda;
       csv.cell(static_cast<long long>(p.x)).cell(static_cast<long long>(p.y));
       csv.cell(static_cast<long long>(scene.size)).cell(static_cast<long long>(n));
       csv.cell(cos).cell(p.n_dot_l);
       if (p.n_dot_l <= 0) {  // facing away from the light: no specular term for any lobe
-        for (int column = 0; column < 7; ++column) csv.cell(0.0);
+        for (int column = 0; column < 10; ++column) csv.cell(0.0);
         csv.end_row();
         continue;
       }
@@ -74,6 +80,7 @@ void run_sphere_study(const StudyOptions& options) {
       in.cos = quantise_cos(formats, cos);
       for (const Core& core : cores) csv.cell(formats.norm.to_real(core.run(in).norm39));
       csv.cell(schlick(cos, n)).cell(us5739820(cos, n));
+      for (const Core& core : minimax) csv.cell(formats.norm.to_real(core.run(in).norm39));
       csv.end_row();
     }
     std::fprintf(stderr, "  sphere n = %u: %zu pixels -> %s\n", n, pixels.size(),

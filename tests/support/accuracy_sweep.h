@@ -56,7 +56,9 @@ struct SweepFigures {
   Worst norm_exact;        ///< |norm − K·cos_q^n|
   Worst out;               ///< |out − out_ref| over the three channels, in units of R, G, B
   Worst out_share;         ///< |out − out_ref| / its bound (1 = at the bound)
-  Worst pass1;             ///< |reg9 pass 1 − (1 − n·log2 cos_q)|
+  Worst pass1;             ///< |reg9 pass 1 − (a − n·log2 cos_q)|
+  Worst lobe_exact;        ///< |s·norm/K − cos_q^n|: the device's own s·A against cos^n
+                           ///< (under normalisation none exactly |multiplier 39 − cos_q^n|)
   std::string first_miss;  ///< the first miss, described
 };
 
@@ -86,7 +88,9 @@ inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes
     }
   };
   for (unsigned n = n_min; n <= n_max; ++n) {
-    const double kn = reference::k(n, config.normalisation);
+    const double kn = reference::k(n, config.normalisation, config.constants, F);
+    const double s_scale = constant_values(config.constants).s();
+    const double a = constant_values(config.constants).a();
     const double norm_tol = reference::norm_tolerance(kn);
     const double p1_tol = pass1_tolerance(f, n);
     for (code_t c : codes) {
@@ -96,9 +100,9 @@ inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes
       in.rgb = rgb;
       const Result r = core.run(in);
       const double cos_q = f.cos.to_real(c);
-      const double approx_ref = reference::approx(cos_q, n, config.saturation, F);
+      const double approx_ref = reference::approx(cos_q, n, config.saturation, F, config.constants);
       const double norm_ref = kn * approx_ref;
-      const double pass1_ref = 1.0 - n * reference::log2_cos(cos_q, F);
+      const double pass1_ref = a - n * reference::log2_cos(cos_q, F);
 
       const double approx = f.reg9.to_real(r.reg9_pass2);
       const double norm = f.norm.to_real(r.norm39);
@@ -112,6 +116,7 @@ inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes
       s.norm_scaled.update(e_norm / std::max(1.0, kn), n, c);
       s.norm_exact.update(std::fabs(norm - kn * reference::exact_lobe(cos_q, n)), n, c);
       s.pass1.update(e_pass1, n, c);
+      s.lobe_exact.update(std::fabs(s_scale * norm / kn - reference::exact_lobe(cos_q, n)), n, c);
       if (!(e_approx <= reference::approx_tolerance()))
         miss(s.approx_misses, "approx", n, c, approx, approx_ref);
       if (!(e_norm <= norm_tol)) miss(s.norm_misses, "norm", n, c, norm, norm_ref);
@@ -153,7 +158,7 @@ inline std::string where(const Formats& f, const Worst& w) {
 inline std::string summary(const Config& config, const SweepFigures& s) {
   const Formats f(config.widths);
   std::ostringstream line;
-  line << "policy=" << to_string(config.normalisation)
+  line << "constants=" << to_string(config.constants) << " policy=" << to_string(config.normalisation)
        << " saturation=" << to_string(config.saturation) << " evaluations=" << s.evaluations
        << " max|approx-ref|=" << with_power_of_two(s.approx.error) << " at " << where(f, s.approx)
        << "; max|norm-ref|/max(1,K)=" << with_power_of_two(s.norm_scaled.error) << " at "
@@ -162,7 +167,8 @@ inline std::string summary(const Config& config, const SweepFigures& s) {
        << " at " << where(f, s.norm_exact) << "; max|out-out_ref|=" << with_power_of_two(s.out.error)
        << " at " << where(f, s.out) << "; max|out-out_ref|/bound=" << s.out_share.error
        << " at " << where(f, s.out_share) << "; max|pass1-ref|=" << with_power_of_two(s.pass1.error)
-       << " at " << where(f, s.pass1);
+       << " at " << where(f, s.pass1) << "; max|s*A-exact|=" << s.lobe_exact.error << " at "
+       << where(f, s.lobe_exact);
   return line.str();
 }
 

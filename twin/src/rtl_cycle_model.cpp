@@ -9,6 +9,7 @@
 #include "Vspecular_device_fast.h"
 #include "Vspecular_device_w20.h"
 #include "specular/arith.h"
+#include "specular/twin/rom38_banks.h"
 
 namespace specular {
 
@@ -57,9 +58,9 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
   VerilatedEngine(const Config& config, const Formats& formats)
       : formats_(formats), top_(&context_) {
     top_.cfg_literal = config.saturation == Saturation::literal;
-    top_.cfg_rom38_bank = static_cast<unsigned>(config.normalisation);
-    top_.pin19_half = low_bits(formats.half_code(), formats.mux4.width());
-    top_.pin20_one = low_bits(formats.one_code(), formats.reg9.width());
+    top_.cfg_rom38_bank = rom38_bank(config);
+    top_.pin19_h = static_cast<std::uint32_t>(low_bits(pin19_code(config), formats.mux4.width()));
+    top_.pin20_a = low_bits(pin20_code(config), formats.reg9.width());
     top_.pin34_carry = 1;
     top_.pin29_reset_n = 1;
     top_.pin28_clk = 0;
@@ -187,6 +188,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
 
 RtlCycleModel::RtlCycleModel(const Config& config) : config_(config) {
   const Formats formats(config.widths);
+  arith::Rom38Table check(formats, config);  // a device the core refuses, the twin refuses too
   if (same_widths(config.widths, Widths{}))
     engine_ = std::make_unique<VerilatedEngine<Vspecular_device_fast>>(config, formats);
   else if (same_widths(config.widths, rtl_alternate_widths()))

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "specular/arith.h"
+#include "specular/twin/rom38_banks.h"
 
 namespace specular {
 
@@ -66,7 +67,8 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
   rtl_ = std::make_unique<Verilated>();
   // The policies, tied off for the life of the device (configuration inputs).
   rtl_->top.cfg_literal = config.saturation == Saturation::literal;
-  rtl_->top.cfg_rom38_bank = static_cast<unsigned>(config.normalisation);
+  rtl_->top.cfg_rom38_bank = rom38_bank(config);
+  arith::Rom38Table check(formats_, config);  // a device the core refuses, the twin refuses too
 
   protocol_checker.start(pin27_start);
   protocol_checker.clk(pin28_clk);
@@ -106,8 +108,8 @@ void RtlDevice::evaluate() {
   const Verilated::Inputs& in = v.inputs;
   top.pin17_cos = static_cast<std::uint32_t>(bits(in.pin17->read(), F::cos));
   top.pin18_n = static_cast<std::uint16_t>(bits(in.pin18->read(), F::n));
-  top.pin19_half = static_cast<std::uint16_t>(bits(in.pin19->read(), F::mux4));
-  top.pin20_one = bits(in.pin20->read(), F::reg9);
+  top.pin19_h = static_cast<std::uint16_t>(bits(in.pin19->read(), F::mux4));
+  top.pin20_a = bits(in.pin20->read(), F::reg9);
   top.pin21_r = static_cast<std::uint8_t>(bits(in.pin21->read(), F::rgb));
   top.pin22_g = static_cast<std::uint8_t>(bits(in.pin22->read(), F::rgb));
   top.pin23_b = static_cast<std::uint8_t>(bits(in.pin23->read(), F::rgb));
@@ -149,8 +151,8 @@ void RtlDevice::evaluate() {
 void RtlDevice::end_of_elaboration() {
   // The pins' channels, read directly on the hot path (an sc_in read checks its binding
   // every time).
-  rtl_->inputs = {pin17_cos.operator->(), pin18_n.operator->(), pin19_half.operator->(),
-                  pin20_one.operator->(), pin21_r.operator->(), pin22_g.operator->(),
+  rtl_->inputs = {pin17_cos.operator->(), pin18_n.operator->(), pin19_h.operator->(),
+                  pin20_a.operator->(), pin21_r.operator->(), pin22_g.operator->(),
                   pin23_b.operator->(), pin27_start.operator->(), pin28_clk.operator->(),
                   pin29_reset_n.operator->(), pin30_load_n.operator->(), pin31_load_r.operator->(),
                   pin32_load_g.operator->(), pin33_load_b.operator->(), pin34_carry.operator->()};
@@ -166,7 +168,7 @@ void RtlDevice::before_end_of_elaboration() {
   // than evaluated on its own — except when tracing, where the waveform shows each pin
   // when it changes. Declared here, once open_vcd() could have been called.
   SC_METHOD(evaluate);
-  sensitive << pin19_half << pin20_one << pin27_start << pin28_clk << pin29_reset_n
+  sensitive << pin19_h << pin20_a << pin27_start << pin28_clk << pin29_reset_n
             << pin30_load_n << pin31_load_r << pin32_load_g << pin33_load_b << pin34_carry;
   if (!vcd_path_.empty()) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
 }

@@ -11,6 +11,9 @@
 #include "specular/format.h"
 
 namespace specular {
+
+struct Config;  // core.h: ROM 38's contents depend on the whole configuration
+
 namespace arith {
 
 // The block functions take their formats as `const FormatSet&`: the run-time Formats
@@ -133,14 +136,15 @@ class Rom5Table {
 };
 
 // ---- Multiplexer 4: multiplier 6's second operand ------------------------------
-/// in0 = register 2 (n), in1 = pin 19 (the constant ½); both on the U10.1 bus.
+/// in0 = register 2 (n), in1 = pin 19 (the constant h: ½ under the patent's
+/// constants); both on the U10.F bus.
 template <class FormatSet>
-inline code_t mux4(const FormatSet& f, bool select36, code_t reg2, code_t pin19_half) {
-  return select36 ? pin19_half : reg2 << f.mux4.frac_bits;
+inline code_t mux4(const FormatSet& f, bool select36, code_t reg2, code_t pin19_h) {
+  return select36 ? pin19_h : reg2 << f.mux4.frac_bits;
 }
 
 // ---- Multiplier 6 -------------------------------------------------------------
-/// log2 × (n or ½), rounded to nearest to adder 8's format and wrapped to its width.
+/// log2 × (n or h), rounded to nearest to adder 8's format and wrapped to its width.
 template <class FormatSet>
 inline code_t mul6(const FormatSet& f, code_t rom5_log2, code_t mux4_operand) {
   if constexpr (FormatSet::compile_time) {
@@ -167,19 +171,43 @@ template <class FormatSet>
 inline code_t inv7(const FormatSet& f, code_t product) { return wrap(f.reg9, ~product); }
 
 // ---- Combinational adder 8 -----------------------------------------------------
-/// pin 20 (1.0) + inverted product + carry-in 34 = 1 − product, modulo the bus width.
+/// pin 20 (a: 1.0 under the patent's constants) + inverted product + carry-in 34
+/// = a − product, modulo the bus width.
 /// Under Saturation::clamp a negative sum saturates at 0 (spec, Decision).
 template <class FormatSet>
-inline code_t adder8(const FormatSet& f, Saturation saturation, code_t pin20_one, code_t inverted,
+inline code_t adder8(const FormatSet& f, Saturation saturation, code_t pin20_a, code_t inverted,
                      bool carry34) {
-  const code_t sum = wrap(f.reg9, pin20_one + inverted + (carry34 ? 1 : 0));
+  const code_t sum = wrap(f.reg9, pin20_a + inverted + (carry34 ? 1 : 0));
   return (saturation == Saturation::clamp && sum < 0) ? 0 : sum;
 }
 
+// ---- The two passes ----------------------------------------------------------------
+/// The combinational path from registers 1, 2, 9 to adder 8's output for a given
+/// select 36: multiplexers 3, 4 → ROM 5 → multiplier 6 → inverter 7 → adder 8.
+template <class FormatSet>
+inline code_t pass(const FormatSet& f, const Rom5Table& rom5, Saturation saturation, code_t pin19_h,
+                   code_t pin20_a, bool select36, code_t reg1, code_t reg9, code_t reg2) {
+  const code_t address = mux3(f, select36, reg1, reg9);
+  const code_t operand = mux4(f, select36, reg2, pin19_h);
+  const code_t product = mul6(f, rom5.log2(f, address), operand);
+  return adder8(f, saturation, pin20_a, inv7(f, product), true);
+}
+
+/// I(n) = 2π ∫₀¹ A(t)·t dt of the device's own clamped register-9 lobe, integrated
+/// exactly over each cos code's rounding interval (the lobe is constant on each):
+/// the equation-6 integral normalisation `device_energy` divides by.
+double register9_lobe_integral(const Formats& formats, const Rom5Table& rom5, code_t pin19_h,
+                               code_t pin20_a, code_t n);
+
 // ---- ROM 38: normalisation coefficient K(n) ------------------------------------
-/// K(n) for every address 0 .. 2^n_bits − 1, rounded to the ROM word (spec §1).
+/// s·K(n) for every address 0 .. 2^n_bits − 1 (n = 0 and n > 1000 included: the
+/// same formula), rounded to the ROM word (spec §1). Under `device_energy` the word is
+/// 1/I(n) (s folds into it). Throws std::invalid_argument naming n and the format if a
+/// word does not fit: ROM 38 is widened, never left to saturate.
 class Rom38Table {
  public:
+  Rom38Table(const Formats& formats, const Config& config);
+  /// The patent's constants (kept for callers that name only the normalisation).
   Rom38Table(const Formats& formats, Normalisation policy);
   code_t k(code_t reg2) const { return words_[static_cast<std::size_t>(reg2) & mask_]; }
   const std::vector<code_t>& words() const { return words_; }

@@ -8,16 +8,27 @@
 #include <array>
 
 #include "specular/arith.h"
+#include "specular/constants.h"
 #include "specular/format.h"
 
 namespace specular {
 
-/// Everything fixed when a device is built: widths and both policies.
+/// Everything fixed when a device is built: widths and the three policies.
 struct Config {
   Widths widths{};
   Normalisation normalisation = Normalisation::patent;
   Saturation saturation = Saturation::clamp;
+  Constants constants = Constants::patent;
 };
+
+/// The codes pins 19 (h) and 20 (a) carry in a device built with `config`: the one
+/// place the core, the pin harness, the TLM target and the tests take them from.
+inline code_t pin19_code(const Config& config) {
+  return pin19_code(Formats(config.widths), config.constants);
+}
+inline code_t pin20_code(const Config& config) {
+  return pin20_code(Formats(config.widths), config.constants);
+}
 
 /// The operands as the device's registers hold them (codes, already checked).
 struct Operands {
@@ -29,10 +40,10 @@ struct Operands {
 /// What the device's registers and output pins hold after one operation.
 struct Result {
   code_t reg1 = 0;                ///< register 1: the cos code actually used
-  code_t reg9_pass1 = 0;          ///< register 9 after pass 1: 1 − n·log2 cos λ
-  code_t reg9_pass2 = 0;          ///< register 9 after pass 2: A ≈ cos^n λ
-  code_t rom38_k = 0;             ///< ROM 38: K(n)
-  code_t norm39 = 0;              ///< multiplier 39: K(n)·A
+  code_t reg9_pass1 = 0;          ///< register 9 after pass 1: a − n·log2 cos λ
+  code_t reg9_pass2 = 0;          ///< register 9 after pass 2: A ≈ cos^n λ / s
+  code_t rom38_k = 0;             ///< ROM 38: s·K(n)
+  code_t norm39 = 0;              ///< multiplier 39: s·K(n)·A
   std::array<code_t, 3> out{};    ///< pins 24, 25, 26
 };
 
@@ -46,14 +57,12 @@ struct DefaultFormats {
   static constexpr FixedFormat cos{false, 1, 16};
   static constexpr FixedFormat n{false, 10, 0};
   static constexpr FixedFormat rgb{false, 8, 0};
-  static constexpr FixedFormat mux4{false, 10, 1};
+  static constexpr FixedFormat mux4{false, 10, 8};
   static constexpr FixedFormat log2{true, 5, 22};
   static constexpr FixedFormat reg9{true, 14, 22};
-  static constexpr FixedFormat rom38{false, 8, 16};
+  static constexpr FixedFormat rom38{false, 9, 16};
   static constexpr FixedFormat norm{true, 10, 20};
   static constexpr FixedFormat out{true, 18, 13};
-  static constexpr code_t half_code() { return code_t{1} << (mux4.frac_bits - 1); }
-  static constexpr code_t one_code() { return reg9.one(); }
 };
 
 class Core {
@@ -87,6 +96,8 @@ class Core {
   const Formats& formats() const { return formats_; }
   const arith::Rom5Table& rom5() const { return rom5_; }
   const arith::Rom38Table& rom38() const { return rom38_; }
+  code_t pin19() const { return pin19_; }
+  code_t pin20() const { return pin20_; }
 
  private:
   template <class FormatSet>
@@ -101,14 +112,10 @@ class Core {
     return r;
   }
 
-  /// The combinational path from registers 1, 2, 9 to adder 8's output, for a
-  /// given select 36: multiplexers 3, 4 → ROM 5 → multiplier 6 → inverter 7 → adder 8.
+  /// One pass with this device's saturation and pin 19/20 constants (arith::pass).
   template <class FormatSet>
   code_t pass(const FormatSet& f, bool select36, code_t reg1, code_t reg9, code_t reg2) const {
-    const code_t address = arith::mux3(f, select36, reg1, reg9);
-    const code_t operand = arith::mux4(f, select36, reg2, f.half_code());
-    const code_t product = arith::mul6(f, rom5_.log2(f, address), operand);
-    return arith::adder8(f, config_.saturation, f.one_code(), arith::inv7(f, product), true);
+    return arith::pass(f, rom5_, config_.saturation, pin19_, pin20_, select36, reg1, reg9, reg2);
   }
 
   /// Every operand within its bus's format. The input buses are unsigned and their
@@ -124,6 +131,7 @@ class Core {
   Config config_;
   Formats formats_;
   int cos_bits_, n_bits_, rgb_bits_;  ///< widths of registers 1, 2 and 10–12
+  code_t pin19_, pin20_;              ///< the constants h and a (pin19_code, pin20_code)
   arith::Rom5Table rom5_;
   arith::Rom38Table rom38_;
   bool default_formats_;

@@ -24,15 +24,16 @@
 namespace specular {
 
 /// The pin-level device. Pins 19, 20 and 34 are wired constants in the patent (½, 1
-/// and logic 1); they stay ports here, and `constant_half19()`, `constant_one20()`
-/// give the codes a harness ties them to.
+/// and logic 1); they stay ports here (pin 19 carries h, pin 20 carries a: ½ and 1
+/// only under the patent's constants), and `constant_h19()`, `constant_a20()` give
+/// the codes a harness ties them to (pin19_code, pin20_code of the Config).
 class SpecularDevice : public sc_core::sc_module {
  public:
   // ---- pins (spec §2) ----
   bus_in pin17_cos{"pin17_cos"};
   bus_in pin18_n{"pin18_n"};
-  bus_in pin19_half{"pin19_half"};
-  bus_in pin20_one{"pin20_one"};
+  bus_in pin19_h{"pin19_h"};
+  bus_in pin20_a{"pin20_a"};
   bus_in pin21_r{"pin21_r"};
   bus_in pin22_g{"pin22_g"};
   bus_in pin23_b{"pin23_b"};
@@ -57,8 +58,8 @@ class SpecularDevice : public sc_core::sc_module {
 
   const Config& config() const { return config_; }
   const Formats& formats() const { return formats_; }
-  code_t constant_half19() const { return formats_.half_code(); }
-  code_t constant_one20() const { return formats_.one_code(); }
+  code_t constant_h19() const { return pin19_code(formats_, config_.constants); }
+  code_t constant_a20() const { return pin20_code(formats_, config_.constants); }
 
   /// Trace every net under this device's name, codes at their format's width, plus
   /// the real-valued views when the device was built with them.

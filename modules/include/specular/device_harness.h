@@ -5,7 +5,7 @@
 // PinHarness in pin_harness.h) or the verilated RTL twin behind its port adapter
 // (twin/: RtlHarness). A Device provides pins 17–35 as bus_in/bus_out/wire_in/wire_out
 // ports, the nets the monitor samples (select36, reg1_q, reg9_q, rom38_k, mul39_norm),
-// formats(), constant_half19(), constant_one20(), trace(file), and a constructor
+// formats(), constant_h19(), constant_a20(), trace(file), and a constructor
 // (name, Config, bool real_views).
 #pragma once
 
@@ -63,8 +63,8 @@ class DeviceHarness : public sc_core::sc_module {
   sc_core::sc_clock pin28_clk;
   bus_signal pin17_cos{"pin17_cos"};
   bus_signal pin18_n{"pin18_n"};
-  bus_signal pin19_half{"pin19_half"};
-  bus_signal pin20_one{"pin20_one"};
+  bus_signal pin19_h{"pin19_h"};
+  bus_signal pin20_a{"pin20_a"};
   bus_signal pin21_r{"pin21_r"};
   bus_signal pin22_g{"pin22_g"};
   bus_signal pin23_b{"pin23_b"};
@@ -106,8 +106,8 @@ DeviceHarness<Device>::DeviceHarness(sc_core::sc_module_name name, const Config&
   SPECULAR_HAS_PROCESS(DeviceHarness);
   dut.pin17_cos(pin17_cos);
   dut.pin18_n(pin18_n);
-  dut.pin19_half(pin19_half);
-  dut.pin20_one(pin20_one);
+  dut.pin19_h(pin19_h);
+  dut.pin20_a(pin20_a);
   dut.pin21_r(pin21_r);
   dut.pin22_g(pin22_g);
   dut.pin23_b(pin23_b);
@@ -124,8 +124,8 @@ DeviceHarness<Device>::DeviceHarness(sc_core::sc_module_name name, const Config&
   dut.pin34_carry(pin34_carry);
   dut.pin35_done(pin35_done);
   // Pins 19 and 20 are wired constants (spec §2 Decisions): ½ and 1.0.
-  pin19_half.write(dut.constant_half19());
-  pin20_one.write(dut.constant_one20());
+  pin19_h.write(dut.constant_h19());
+  pin20_a.write(dut.constant_a20());
 
   SC_METHOD(on_select36);
   sensitive << dut.select36.posedge_event();
@@ -233,7 +233,7 @@ void DeviceHarness<Device>::trace(sc_core::sc_trace_file* file) const {
   const std::string scope = std::string(name()) + ".";
   const Formats& f = dut.formats();
   const std::pair<const bus_signal*, const FixedFormat*> buses[] = {
-      {&pin17_cos, &f.cos}, {&pin18_n, &f.n},   {&pin19_half, &f.mux4}, {&pin20_one, &f.reg9},
+      {&pin17_cos, &f.cos}, {&pin18_n, &f.n},   {&pin19_h, &f.mux4}, {&pin20_a, &f.reg9},
       {&pin21_r, &f.rgb},   {&pin22_g, &f.rgb}, {&pin23_b, &f.rgb},     {&pin24_r, &f.out},
       {&pin25_g, &f.out},   {&pin26_b, &f.out}};
   for (const auto& [bus, format] : buses)

@@ -38,6 +38,17 @@ enum class Normalisation {
   patent,  ///< K(n) = 2π/(n+2), as claimed (default)
   energy,  ///< K(n) = (n+2)/(2π), makes the exact lobe's hemisphere integral 1
   none,    ///< K(n) = 1, the prototype device UA 22802
+  device_energy,  ///< K(n) = 1/I(n), I(n) the equation-6 integral of the device's own
+                  ///< clamped register-9 lobe: what multiplier 39 gives integrates to 1
+};
+
+/// Constants on pins 20 (a) and 19 (h) and ROM 38's scale s (spec, Decision
+/// "constants"): the device computes s·K(n)·max(0, a − h·log2(a − n·log2 cos λ)).
+/// The values are frozen in modules/src/constants.cpp (specular_constants found them).
+enum class Constants {
+  patent,        ///< a = 1, h = ½, s = 1, as the patent says (default)
+  minimax_half,  ///< h = ½ kept; a and s minimise the largest error (0.0734)
+  minimax,       ///< h on pin 19's 8 fraction bits too (0.0398)
 };
 
 /// What adder 8 does with a negative result (spec, Decision "negative results").
@@ -48,9 +59,11 @@ enum class Saturation {
 
 const char* to_string(Normalisation policy);
 const char* to_string(Saturation policy);
+const char* to_string(Constants policy);
 /// Parse a policy name; throws std::invalid_argument naming the value and the choices.
 Normalisation parse_normalisation(const std::string& text);
 Saturation parse_saturation(const std::string& text);
+Constants parse_constants(const std::string& text);
 
 /// The widths the designer chooses. Every bus format below is derived from these,
 /// so a width changes here and nowhere else. Defaults are justified in docs/design.md.
@@ -58,11 +71,12 @@ struct Widths {
   int cos_frac_bits = 16;   ///< pin 17 / register 1: cos λ as U1.F
   int n_bits = 10;          ///< pin 18 / register 2: n as an unsigned integer (1..1000)
   int rgb_bits = 8;         ///< pins 21–23 / registers 10–12: unsigned intensities
+  int pin19_frac_bits = 8;  ///< pin 19 / multiplexer 4's bus: h as U10.F (minimax's h = 41/256)
   int rom5_addr_bits = 15;  ///< ROM 5 address: mantissa bits after the leading one
   int rom5_word_bits = 22;  ///< ROM 5 word: fraction bits of log2(1.m) ∈ [0, 1)
   int reg9_int_bits = 14;   ///< adder 8 / register 9 / multiplexer 3 bus: integer bits
   int reg9_frac_bits = 22;  ///< ... and fraction bits (signed format)
-  int rom38_int_bits = 8;   ///< ROM 38 word: K(n) as U8.F (energy policy reaches 163)
+  int rom38_int_bits = 9;   ///< ROM 38 word: s·K(n) as U9.F (energy × minimax reaches 272)
   int rom38_frac_bits = 16;
   int norm_int_bits = 10;   ///< multiplier 39 output: K·A as a signed format
   int norm_frac_bits = 20;
@@ -83,10 +97,10 @@ struct Formats {
   FixedFormat cos;     ///< pin 17, register 1 (U1.16)
   FixedFormat n;       ///< pin 18, register 2, ROM 38 address (U10.0)
   FixedFormat rgb;     ///< pins 21–23, registers 10–12 (U8.0)
-  FixedFormat mux4;    ///< multiplexer 4 output: n or ½ on one bus (U10.1)
+  FixedFormat mux4;    ///< multiplexer 4 output: n or pin 19's h on one bus (U10.8)
   FixedFormat log2;    ///< ROM 5 output: log2 of its input (S5.22)
   FixedFormat reg9;    ///< multiplier 6 / inverter 7 / adder 8 / register 9 / multiplexer 3 (S14.22)
-  FixedFormat rom38;   ///< ROM 38 word K(n) (U8.16)
+  FixedFormat rom38;   ///< ROM 38 word s·K(n) (U9.16)
   FixedFormat norm;    ///< multiplier 39 output K·A (S10.20)
   FixedFormat out;     ///< pins 24–26, multipliers 13–15 (S18.13)
 
@@ -94,11 +108,6 @@ struct Formats {
   int rom38_words() const { return 1 << widths.n_bits; }
   long rom5_bits() const { return static_cast<long>(rom5_words()) * widths.rom5_word_bits; }
   long rom38_bits() const { return static_cast<long>(rom38_words()) * rom38.width(); }
-
-  /// Pin 19: the constant ½ in multiplexer 4's format.
-  code_t half_code() const { return code_t{1} << (mux4.frac_bits - 1); }
-  /// Pin 20: the constant 1 in adder 8's format.
-  code_t one_code() const { return reg9.one(); }
 };
 
 /// Smallest and largest n the device accepts (spec §1).

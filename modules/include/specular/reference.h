@@ -14,11 +14,20 @@ namespace reference {
 /// (spec, Decision "log2 0").
 double log2_cos(double cos_q, int cos_frac_bits);
 
-/// A = 1 − ½·log2(1 − n·log2 cos λ), saturated at 0 under Saturation::clamp.
-double approx(double cos_q, unsigned n, Saturation saturation, int cos_frac_bits);
+/// A = a − h·log2(a − n·log2 cos λ) with the policy's constants on pins 20 and 19
+/// (the patent's: 1 − ½·log2(1 − n·log2 cos λ)), saturated at 0 under Saturation::clamp.
+double approx(double cos_q, unsigned n, Saturation saturation, int cos_frac_bits,
+              Constants constants = Constants::patent);
 
-/// K(n) under a normalisation policy: 2π/(n+2), (n+2)/(2π) or 1.
-double k(unsigned n, Normalisation policy);
+/// ROM 38's K(n), scaled by the constants' s: s·2π/(n+2), s·(n+2)/(2π), s, or under
+/// `device_energy` 1/I(n), I(n) = Σ_codes approx(clamp)·code_interval_integral: the
+/// double formula's own equation-6 integral (the device's is within ~1e-5 of it).
+double k(unsigned n, Normalisation policy, Constants constants = Constants::patent,
+         int cos_frac_bits = 16);
+
+/// 2π ∫ t dt over cos code c's rounding interval [(c − ½)·2^−F, (c + ½)·2^−F] ∩ [0, 1]:
+/// the weight of a lobe that is constant on each code in the equation-6 integral.
+double code_interval_integral(long long code, int cos_frac_bits);
 
 /// The exact lobe cos^n λ.
 double exact_lobe(double cos_q, unsigned n);
@@ -33,7 +42,8 @@ struct Figures {
 };
 
 Figures evaluate(double cos_q, unsigned n, const std::array<double, 3>& rgb,
-                 Normalisation normalisation, Saturation saturation, int cos_frac_bits);
+                 Normalisation normalisation, Saturation saturation, int cos_frac_bits,
+                 Constants constants = Constants::patent);
 
 /// Accuracy bounds the device is held to (issue 2, item 7).
 double approx_tolerance();                        ///< 2^-10

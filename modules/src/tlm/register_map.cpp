@@ -50,7 +50,7 @@ const char* describe(ErrorCause cause) {
 
 std::uint32_t config_word(const Config& config) {
   return config_word(config.normalisation, config.saturation, config.widths.cos_frac_bits,
-                     config.widths.out_frac_bits, config.widths.rgb_bits);
+                     config.widths.out_frac_bits, config.widths.rgb_bits, config.constants);
 }
 
 namespace {

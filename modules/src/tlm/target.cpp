@@ -68,6 +68,8 @@ SpecularTarget::SpecularTarget(sc_core::sc_module_name name, const Config& confi
   for (const RegisterInfo& row : register_map)
     if (row.words == 1) words_[index_of(row.reg)] = row.reset;
   word(Reg::config) = config_word(config_);
+  word(Reg::pin19_h) = static_cast<std::uint32_t>(pin19_code(config_));
+  word(Reg::pin20_a) = static_cast<std::uint32_t>(pin20_code(config_));
 
   socket.register_b_transport(this, &SpecularTarget::b_transport);
   socket.register_transport_dbg(this, &SpecularTarget::transport_dbg);

@@ -9,7 +9,7 @@ namespace specular {
 /// Saturation::clamp (spec, Decision "negative results").
 class Adder8 : public sc_core::sc_module {
  public:
-  bus_in one20{"one20"};
+  bus_in a20{"a20"};
   bus_in inverted{"inverted"};
   wire_in carry34{"carry34"};
   bus_out sum{"sum"};

@@ -9,7 +9,7 @@ namespace specular {
 class Multiplexer4 : public sc_core::sc_module {
  public:
   bus_in reg2{"reg2"};
-  bus_in half19{"half19"};
+  bus_in h19{"h19"};
   wire_in select36{"select36"};
   bus_out operand{"operand"};
 

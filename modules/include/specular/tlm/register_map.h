@@ -50,6 +50,8 @@ enum class Reg : std::uint8_t {
   reg9_pass2_hi,
   rom38_k,
   norm39,
+  pin19_h,
+  pin20_a,
   operands,   ///< window: COS, N, R, G, B, CONTROL as one burst (aliases)
   results,    ///< window: OUT_R, OUT_G, OUT_B as one burst (aliases)
   batch_cos,  ///< window: one cos code per operation
@@ -80,7 +82,7 @@ constexpr std::uint32_t batch_capacity = 1024;
 /// Identification: the patent number, readable in a hex dump (UA 59965 U).
 constexpr std::uint32_t device_id = 0x00059965;
 /// Register map version, major << 16 | minor. Bump major on incompatible changes.
-constexpr std::uint32_t map_version = 0x00010000;
+constexpr std::uint32_t map_version = 0x00010001;  // 1.1: CONFIG[6:5], PIN19_H, PIN20_A
 
 // ---- STATUS fields ----------------------------------------------------------------
 namespace status_bits {
@@ -99,8 +101,9 @@ constexpr std::uint32_t defined = start;  ///< writing any other bit is refused
 
 // ---- CONFIG fields (read-only, fixed at construction like ROM 38's contents) ------
 namespace config_bits {
-constexpr int normalisation_shift = 0;  ///< bits 1:0: 0 patent, 1 energy, 2 none
+constexpr int normalisation_shift = 0;  ///< bits 1:0: 0 patent, 1 energy, 2 none, 3 device-energy
 constexpr int saturation_shift = 4;     ///< bit 4: 0 clamp, 1 literal
+constexpr int constants_shift = 5;      ///< bits 6:5: 0 patent, 1 minimax-half, 2 minimax
 constexpr int cos_frac_shift = 8;       ///< bits 15:8: fraction bits of COS (U1.F)
 constexpr int out_frac_shift = 16;      ///< bits 23:16: fraction bits of OUT_* (signed)
 constexpr int rgb_bits_shift = 24;      ///< bits 31:24: width of R, G, B
@@ -108,8 +111,10 @@ constexpr int rgb_bits_shift = 24;      ///< bits 31:24: width of R, G, B
 
 /// The CONFIG word for a configuration.
 constexpr std::uint32_t config_word(Normalisation normalisation, Saturation saturation,
-                                    int cos_frac_bits, int out_frac_bits, int rgb_bits) {
+                                    int cos_frac_bits, int out_frac_bits, int rgb_bits,
+                                    Constants constants = Constants::patent) {
   return (static_cast<std::uint32_t>(normalisation) << config_bits::normalisation_shift) |
+         (static_cast<std::uint32_t>(constants) << config_bits::constants_shift) |
          (static_cast<std::uint32_t>(saturation) << config_bits::saturation_shift) |
          (static_cast<std::uint32_t>(cos_frac_bits) << config_bits::cos_frac_shift) |
          (static_cast<std::uint32_t>(out_frac_bits) << config_bits::out_frac_shift) |
@@ -143,7 +148,7 @@ inline constexpr std::array<RegisterInfo, register_count> register_map{{
     {Reg::id,             "ID",             0x000, 1, Access::read_only,        device_id,   "Identification: 0x00059965 (patent UA 59965 U)"},
     {Reg::version,        "VERSION",        0x004, 1, Access::read_only,        map_version, "Register map version: (major << 16) + minor"},
     {Reg::config,         "CONFIG",         0x008, 1, Access::read_only,        config_word(Normalisation::patent, Saturation::clamp, 16, 13, 8),
-                                                                                             "[1:0] normalisation (0 patent, 1 energy, 2 none), [4] saturation (0 clamp, 1 literal), [15:8] COS fraction bits, [23:16] OUT fraction bits, [31:24] RGB bits; fixed at construction (reset shown for the defaults)"},
+                                                                                             "[1:0] normalisation (0 patent, 1 energy, 2 none, 3 device-energy), [4] saturation (0 clamp, 1 literal), [6:5] constants (0 patent, 1 minimax-half, 2 minimax), [15:8] COS fraction bits, [23:16] OUT fraction bits, [31:24] RGB bits; fixed at construction (reset shown for the defaults)"},
     {Reg::status,         "STATUS",         0x00C, 1, Access::write_1_to_clear, 0,           "[0] busy, [1] done (W1C, drives done_irq), [2] error (W1C, clears cause and ERROR_ADDRESS), [15:8] error cause"},
     {Reg::control,        "CONTROL",        0x010, 1, Access::self_clearing,    0,           "[0] START: run one operation on COS, N, R, G, B; other bits refused; reads 0"},
     {Reg::batch_capacity, "BATCH_CAPACITY", 0x014, 1, Access::read_only,        batch_capacity, "Operations per batch transaction (BATCH_COS words)"},
@@ -161,8 +166,10 @@ inline constexpr std::array<RegisterInfo, register_count> register_map{{
     {Reg::reg9_pass1_hi,  "REG9_PASS1_HI",  0x058, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
     {Reg::reg9_pass2_lo,  "REG9_PASS2_LO",  0x05C, 1, Access::read_only,        0,           "Inspection: register 9 after pass 2 (A), S14.22, bits 31:0"},
     {Reg::reg9_pass2_hi,  "REG9_PASS2_HI",  0x060, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
-    {Reg::rom38_k,        "ROM38_K",        0x064, 1, Access::read_only,        0,           "Inspection: ROM 38 word K(n), U8.16"},
-    {Reg::norm39,         "NORM39",         0x068, 1, Access::read_only,        0,           "Inspection: multiplier 39 output K·A, S10.20"},
+    {Reg::rom38_k,        "ROM38_K",        0x064, 1, Access::read_only,        0,           "Inspection: ROM 38 word s·K(n), U9.16"},
+    {Reg::norm39,         "NORM39",         0x068, 1, Access::read_only,        0,           "Inspection: multiplier 39 output s·K·A, S10.20"},
+    {Reg::pin19_h,        "PIN19_H",        0x06C, 1, Access::read_only,        0x80,        "Pin 19: the constant h, U10.8 code (0x80 = ½, the patent's); fixed at construction by CONFIG's constants"},
+    {Reg::pin20_a,        "PIN20_A",        0x070, 1, Access::read_only,        0x400000,    "Pin 20: the constant a, S14.22 code (0x400000 = 1.0, the patent's); fixed at construction by CONFIG's constants"},
     {Reg::operands,       "OPERANDS",       0x080, 6, Access::read_write,       0,           "Operand block: words 0–5 are COS, N, R, G, B, CONTROL (the registers above); a burst writes any contiguous part, all words checked before any is stored; START in word 5 then runs the operation"},
     {Reg::results,        "RESULTS",        0x0A0, 3, Access::read_only,        0,           "Result block: OUT_R, OUT_G, OUT_B (the registers above) in one burst read"},
     {Reg::batch_cos,      "BATCH_COS",      0x1000, batch_capacity, Access::read_write, 0,   "Batch window: a burst write of k cos codes at word i runs k operations (N, R, G, B shared), results to BATCH_OUT word 3i"},

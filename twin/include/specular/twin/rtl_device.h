@@ -21,7 +21,8 @@ namespace specular {
 /// adapters in between, took about 4 process activations per clock edge and ran
 /// slower than the netlist (docs/performance.md). Policies reach the model as its
 /// configuration inputs, tied off here: cfg_literal = Saturation::literal,
-/// cfg_rom38_bank = the Normalisation's ROM 38 image (docs/rtl.md).
+/// cfg_rom38_bank = the ROM 38 image of the Config's constants and normalisation
+/// (rom38_banks.h, docs/rtl.md); pins 19 and 20 carry the constants h and a.
 ///
 /// The model is verilated at the default widths (docs/design.md); a Config with other
 /// widths is refused with std::invalid_argument.
@@ -29,8 +30,8 @@ class RtlDevice : public sc_core::sc_module {
  public:
   bus_in pin17_cos{"pin17_cos"};
   bus_in pin18_n{"pin18_n"};
-  bus_in pin19_half{"pin19_half"};
-  bus_in pin20_one{"pin20_one"};
+  bus_in pin19_h{"pin19_h"};
+  bus_in pin20_a{"pin20_a"};
   bus_in pin21_r{"pin21_r"};
   bus_in pin22_g{"pin22_g"};
   bus_in pin23_b{"pin23_b"};
@@ -55,8 +56,8 @@ class RtlDevice : public sc_core::sc_module {
 
   const Config& config() const { return config_; }
   const Formats& formats() const { return formats_; }
-  code_t constant_half19() const { return formats_.half_code(); }
-  code_t constant_one20() const { return formats_.one_code(); }
+  code_t constant_h19() const { return pin19_code(config_); }
+  code_t constant_a20() const { return pin20_code(config_); }
 
   /// The SystemC trace file gets nothing from the twin: its nets are traced by
   /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw).

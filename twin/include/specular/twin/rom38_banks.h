@@ -1,0 +1,27 @@
+// ROM 38 of the RTL holds one image per device that can be built: one bank per
+// (constants, normalisation) pair, chosen by its configuration input cfg_rom38_bank.
+// Written once for the image generator (rtl/romgen) and the twin's wrappers (twin/).
+#pragma once
+
+#include "specular/core.h"
+
+namespace specular {
+
+/// Bank address bits: 3 constants policies × 4 normalisations in 16 banks.
+constexpr int rom38_bank_bits = 4;
+
+/// bank = 4 · constants + normalisation (the enums' values; saturation is adder 8's
+/// concern, not ROM 38's).
+constexpr unsigned rom38_bank(Constants constants, Normalisation normalisation) {
+  return 4u * static_cast<unsigned>(constants) + static_cast<unsigned>(normalisation);
+}
+constexpr unsigned rom38_bank(const Config& config) {
+  return rom38_bank(config.constants, config.normalisation);
+}
+
+constexpr Constants every_constants[] = {Constants::patent, Constants::minimax_half,
+                                         Constants::minimax};
+constexpr Normalisation every_normalisation[] = {Normalisation::patent, Normalisation::energy,
+                                                 Normalisation::none, Normalisation::device_energy};
+
+}  // namespace specular

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <stdexcept>
 #include <sstream>
 #include <tuple>
 
@@ -23,11 +24,10 @@ namespace tb {
 namespace {
 
 /// Runs the sweep on `model` under the test's policy and checks every result.
-void sweep_against_core(Model model, const testing_support::PolicyTest::ParamType& policy) {
+void sweep_against_core(Model model, const Config& config) {
   RunSettings settings;
   settings.model = model;
-  settings.config.normalisation = std::get<0>(policy);
-  settings.config.saturation = std::get<1>(policy);
+  settings.config = config;
   const Core core(settings.config);
   const Formats& f = core.formats();
   SweepSource sweep(f, {255, 128, 1});
@@ -63,7 +63,7 @@ void sweep_against_core(Model model, const testing_support::PolicyTest::ParamTyp
   run.model = to_string(model);
   run.config = settings.config;
   write_summary_text(text, s, run, -1);
-  std::cout << "model=" << to_string(model) << " policy=" << to_string(settings.config.normalisation)
+  std::cout << "model=" << to_string(model) << " constants=" << to_string(settings.config.constants) << " policy=" << to_string(settings.config.normalisation)
             << " saturation=" << to_string(settings.config.saturation) << '\n'
             << text.str() << std::flush;
   ::testing::Test::RecordProperty("summary", text.str());
@@ -76,15 +76,30 @@ void sweep_against_core(Model model, const testing_support::PolicyTest::ParamTyp
 }
 
 class PinSweep : public testing_support::PolicyTest {};
-class RtlSweep : public testing_support::PolicyTest {};
+class RtlSweep : public testing_support::DevicePolicyTest {};
 
-TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) { sweep_against_core(Model::pin, GetParam()); }
-TEST_P(RtlSweep, RtlEqualsCoreBitForBitAndMeetsTheBounds) { sweep_against_core(Model::rtl, GetParam()); }
+TEST_P(PinSweep, PinEqualsCoreBitForBitAndMeetsTheBounds) {
+  Config config;
+  config.normalisation = std::get<0>(GetParam());
+  config.saturation = std::get<1>(GetParam());
+  sweep_against_core(Model::pin, config);
+}
+// The twin under every constants policy too; the devices the core refuses, it refuses.
+TEST_P(RtlSweep, RtlEqualsCoreBitForBitAndMeetsTheBounds) {
+  try {
+    const Core core(config());
+  } catch (const std::invalid_argument&) {
+    const Config refused = config();
+    EXPECT_THROW(sweep_against_core(Model::rtl, refused), std::invalid_argument);
+    return;
+  }
+  sweep_against_core(Model::rtl, config());
+}
 
 INSTANTIATE_TEST_SUITE_P(Policies, PinSweep, testing_support::every_policy(),
                          testing_support::policy_name);
-INSTANTIATE_TEST_SUITE_P(Policies, RtlSweep, testing_support::every_policy(),
-                         testing_support::policy_name);
+INSTANTIATE_TEST_SUITE_P(Devices, RtlSweep, testing_support::every_device(),
+                         testing_support::device_name);
 
 }  // namespace
 }  // namespace tb

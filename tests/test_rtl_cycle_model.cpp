@@ -59,29 +59,38 @@ void expect_equal_to_core(const Config& config, bool stream) {
   EXPECT_EQ(mismatches, 0u);
 }
 
-class RtlCycleModelPolicies : public testing_support::PolicyTest {
+class RtlCycleModelPolicies : public testing_support::DevicePolicyTest {
  protected:
   Config config(const Widths& widths) const {
-    Config c;
+    Config c = DevicePolicyTest::config();
     c.widths = widths;
-    c.normalisation = std::get<0>(GetParam());
-    c.saturation = std::get<1>(GetParam());
     return c;
+  }
+  /// The devices the core refuses (a ROM 38 word it cannot hold): the twin refuses them
+  /// too, and there is nothing to compare.
+  bool refused(const Config& c) const {
+    try {
+      const Core core(c);
+      return false;
+    } catch (const std::invalid_argument&) {
+      EXPECT_THROW(RtlCycleModel rtl(c), std::invalid_argument);
+      return true;
+    }
   }
 };
 
 TEST_P(RtlCycleModelPolicies, DefaultWidthsReloadingEqualsTheCore) {
-  expect_equal_to_core(config(Widths{}), false);
+  if (!refused(config(Widths{}))) expect_equal_to_core(config(Widths{}), false);
 }
 TEST_P(RtlCycleModelPolicies, DefaultWidthsStreamingEqualsTheCore) {
-  expect_equal_to_core(config(Widths{}), true);
+  if (!refused(config(Widths{}))) expect_equal_to_core(config(Widths{}), true);
 }
 TEST_P(RtlCycleModelPolicies, AlternateWidthsEqualTheCoreAtTheSameWidths) {
-  expect_equal_to_core(config(rtl_alternate_widths()), false);
+  if (!refused(config(rtl_alternate_widths()))) expect_equal_to_core(config(rtl_alternate_widths()), false);
 }
 
-INSTANTIATE_TEST_SUITE_P(Policies, RtlCycleModelPolicies, testing_support::every_policy(),
-                         testing_support::policy_name);
+INSTANTIATE_TEST_SUITE_P(Devices, RtlCycleModelPolicies, testing_support::every_device(),
+                         testing_support::device_name);
 
 TEST(RtlCycleModel, AlternateWidthsAreWhatTheDocsSay) {
   const Widths w = rtl_alternate_widths();

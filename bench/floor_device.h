@@ -9,32 +9,13 @@
 
 #include "specular/core.h"
 #include "specular/device_harness.h"
+#include "specular/device_pins.h"
 #include "specular/systemc.h"
 
 namespace specular_bench {
 
-class FloorDevice : public sc_core::sc_module {
+class FloorDevice : public specular::DevicePins {
  public:
-  specular::bus_in pin17_cos{"pin17_cos"};
-  specular::bus_in pin18_n{"pin18_n"};
-  specular::bus_in pin19_h{"pin19_h"};
-  specular::bus_in pin20_a{"pin20_a"};
-  specular::bus_in pin21_r{"pin21_r"};
-  specular::bus_in pin22_g{"pin22_g"};
-  specular::bus_in pin23_b{"pin23_b"};
-  specular::bus_out pin24_r{"pin24_r"};
-  specular::bus_out pin25_g{"pin25_g"};
-  specular::bus_out pin26_b{"pin26_b"};
-  specular::wire_in pin27_start{"pin27_start"};
-  specular::wire_in pin28_clk{"pin28_clk"};
-  specular::wire_in pin29_reset_n{"pin29_reset_n"};
-  specular::wire_in pin30_load_n{"pin30_load_n"};
-  specular::wire_in pin31_load_r{"pin31_load_r"};
-  specular::wire_in pin32_load_g{"pin32_load_g"};
-  specular::wire_in pin33_load_b{"pin33_load_b"};
-  specular::wire_in pin34_carry{"pin34_carry"};
-  specular::wire_out pin35_done{"pin35_done"};
-
   specular::wire select36{"select36"};
   specular::bus_signal reg1_q{"reg1_q"};
   specular::bus_signal reg9_q{"reg9_q"};
@@ -42,7 +23,7 @@ class FloorDevice : public sc_core::sc_module {
   specular::bus_signal mul39_norm{"mul39_norm"};
 
   FloorDevice(sc_core::sc_module_name name, const specular::Config& config, bool /*real_views*/)
-      : sc_module(name), config_(config), formats_(config.widths) {
+      : DevicePins(name), config_(config), formats_(config.widths) {
     SPECULAR_HAS_PROCESS(FloorDevice);
     SC_METHOD(on_start);
     sensitive << pin27_start.pos();

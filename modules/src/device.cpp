@@ -4,7 +4,7 @@ namespace specular {
 
 SpecularDevice::SpecularDevice(sc_core::sc_module_name name, const Config& config,
                                bool real_views)
-    : sc_module(name),
+    : DevicePins(name),
       config_(config),
       formats_(config.widths),
       rom5_table_(formats_),
@@ -52,17 +52,7 @@ SpecularDevice::SpecularDevice(sc_core::sc_module_name name, const Config& confi
   cu16.done35(pin35_done);
 
   // Observer only: reports protocol misuse as SC_REPORT_WARNING (report_ids.h).
-  protocol_checker.start(pin27_start);
-  protocol_checker.clk(pin28_clk);
-  protocol_checker.reset_n(pin29_reset_n);
-  protocol_checker.load_n30(pin30_load_n);
-  protocol_checker.load_r31(pin31_load_r);
-  protocol_checker.load_g32(pin32_load_g);
-  protocol_checker.load_b33(pin33_load_b);
-  protocol_checker.done35(pin35_done);
-  protocol_checker.q41(cu16.q41);
-  protocol_checker.q42(cu16.q42);
-  protocol_checker.nand45(cu16.nand45_y);
+  bind(protocol_checker, cu16.q41, cu16.q42, cu16.nand45_y);
 
   if (real_views) {
     // Real views only where a number reads better than a code and is not shown by

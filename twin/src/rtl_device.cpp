@@ -54,7 +54,7 @@ struct RtlDevice::Verilated {
 };
 
 RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
-    : sc_module(name), config_(config), formats_(config.widths) {
+    : DevicePins(name), config_(config), formats_(config.widths) {
   if (!default_formats(formats_))
     throw std::invalid_argument(
         "the RTL twin is verilated at the default widths of docs/design.md; "
@@ -70,17 +70,7 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
   rtl_->top.cfg_rom38_bank = rom38_bank(config);
   arith::Rom38Table check(formats_, config);  // a device the core refuses, the twin refuses too
 
-  protocol_checker.start(pin27_start);
-  protocol_checker.clk(pin28_clk);
-  protocol_checker.reset_n(pin29_reset_n);
-  protocol_checker.load_n30(pin30_load_n);
-  protocol_checker.load_r31(pin31_load_r);
-  protocol_checker.load_g32(pin32_load_g);
-  protocol_checker.load_b33(pin33_load_b);
-  protocol_checker.done35(pin35_done);
-  protocol_checker.q41(q41);
-  protocol_checker.q42(q42);
-  protocol_checker.nand45(nand45);
+  bind(protocol_checker, q41, q42, nand45);
 
   // Outputs start as the netlist's do (35 high, NAND 45 high) until the first eval.
   pin35_done.initialize(true);

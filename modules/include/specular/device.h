@@ -17,6 +17,7 @@
 #include "specular/datapath/register.h"
 #include "specular/datapath/rom38.h"
 #include "specular/datapath/rom5.h"
+#include "specular/device_pins.h"
 #include "specular/protocol_checker.h"
 #include "specular/real_view.h"
 #include "specular/systemc.h"
@@ -27,29 +28,8 @@ namespace specular {
 /// and logic 1); they stay ports here (pin 19 carries h, pin 20 carries a: ½ and 1
 /// only under the patent's constants), and `constant_h19()`, `constant_a20()` give
 /// the codes a harness ties them to (pin19_code, pin20_code of the Config).
-class SpecularDevice : public sc_core::sc_module {
+class SpecularDevice : public DevicePins {
  public:
-  // ---- pins (spec §2) ----
-  bus_in pin17_cos{"pin17_cos"};
-  bus_in pin18_n{"pin18_n"};
-  bus_in pin19_h{"pin19_h"};
-  bus_in pin20_a{"pin20_a"};
-  bus_in pin21_r{"pin21_r"};
-  bus_in pin22_g{"pin22_g"};
-  bus_in pin23_b{"pin23_b"};
-  bus_out pin24_r{"pin24_r"};
-  bus_out pin25_g{"pin25_g"};
-  bus_out pin26_b{"pin26_b"};
-  wire_in pin27_start{"pin27_start"};      ///< write register 1 and start
-  wire_in pin28_clk{"pin28_clk"};          ///< reference clock
-  wire_in pin29_reset_n{"pin29_reset_n"};  ///< reset the control unit, active low
-  wire_in pin30_load_n{"pin30_load_n"};    ///< write register 2
-  wire_in pin31_load_r{"pin31_load_r"};    ///< write register 10
-  wire_in pin32_load_g{"pin32_load_g"};    ///< write register 11
-  wire_in pin33_load_b{"pin33_load_b"};    ///< write register 12
-  wire_in pin34_carry{"pin34_carry"};      ///< adder 8 carry-in, tied to 1
-  wire_out pin35_done{"pin35_done"};       ///< done: active-low pulse, rises when results are valid
-
   /// `real_views` adds real-valued mirrors of the main buses for VCD traces, for
   /// viewers that cannot show a code bus as fixed point (GTKWave can:
   /// waveforms/specular.gtkw); they cost about 1.3x the trace time.

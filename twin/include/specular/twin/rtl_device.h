@@ -8,12 +8,13 @@
 
 #include "specular/core.h"
 #include "specular/device_harness.h"
+#include "specular/device_pins.h"
 #include "specular/protocol_checker.h"
 #include "specular/systemc.h"
 
 namespace specular {
 
-/// Pins 17–35 as code_t buses and bool wires, like SpecularDevice. Inside, the
+/// Pins 17–35 (DevicePins), as SpecularDevice has them. Inside, the
 /// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to every
 /// input pin, that copies the pins into the model, evaluates it and writes its
 /// outputs back, sign-extending the signed buses. One process activation per input
@@ -26,28 +27,8 @@ namespace specular {
 ///
 /// The model is verilated at the default widths (docs/design.md); a Config with other
 /// widths is refused with std::invalid_argument.
-class RtlDevice : public sc_core::sc_module {
+class RtlDevice : public DevicePins {
  public:
-  bus_in pin17_cos{"pin17_cos"};
-  bus_in pin18_n{"pin18_n"};
-  bus_in pin19_h{"pin19_h"};
-  bus_in pin20_a{"pin20_a"};
-  bus_in pin21_r{"pin21_r"};
-  bus_in pin22_g{"pin22_g"};
-  bus_in pin23_b{"pin23_b"};
-  bus_out pin24_r{"pin24_r"};
-  bus_out pin25_g{"pin25_g"};
-  bus_out pin26_b{"pin26_b"};
-  wire_in pin27_start{"pin27_start"};
-  wire_in pin28_clk{"pin28_clk"};
-  wire_in pin29_reset_n{"pin29_reset_n"};
-  wire_in pin30_load_n{"pin30_load_n"};
-  wire_in pin31_load_r{"pin31_load_r"};
-  wire_in pin32_load_g{"pin32_load_g"};
-  wire_in pin33_load_b{"pin33_load_b"};
-  wire_in pin34_carry{"pin34_carry"};
-  wire_out pin35_done{"pin35_done"};
-
   /// `real_views` is accepted for DeviceHarness's sake and refused when true: the
   /// twin's waveform is Verilator's own (open_vcd), codes only.
   RtlDevice(sc_core::sc_module_name name, const Config& config = Config{},

@@ -30,6 +30,12 @@ set(policy_options --constants ${CONSTANTS} --policy ${NORMALISATION} --saturati
 execute_process(COMMAND ${SPECULAR_TB} ${policy_options}
                         --input ${SCRATCH}/stimulus.csv --format csv --output ${SCRATCH}/groups.csv
                 RESULT_VARIABLE status ERROR_VARIABLE summary)
+if(status EQUAL 2 AND summary MATCHES "saturation literal with normalisation")
+  # A combination the device refuses (K*A beyond multiplier 39's format): nothing to
+  # replay; the test reports itself skipped (SKIP_REGULAR_EXPRESSION).
+  message(STATUS "rtl_icarus: combination refused by the model: ${summary}")
+  return()
+endif()
 if(NOT status MATCHES "^[01]$")  # 1: a value outside the reference's tolerance (literal)
   message(FATAL_ERROR "specular_tb --input failed (status ${status}): ${summary}")
 endif()
@@ -77,9 +83,11 @@ execute_process(
           -Pspecular_device_tb.CONSTANTS=${CONSTANTS_VALUE}
           -Pspecular_device_tb.NORMALISATION=${NORMALISATION_VALUE}
           ${SOURCES} ${TESTBENCH}
-  RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "iverilog failed (status ${status})")
+  RESULT_VARIABLE status OUTPUT_VARIABLE compile_log ERROR_VARIABLE compile_log)
+# Any iverilog warning fails the test (the device's files carry no `timescale: the
+# one warning that would bring is switched off, docs/rtl.md).
+if(NOT status EQUAL 0 OR compile_log MATCHES "[Ww]arning")
+  message(FATAL_ERROR "iverilog failed or warned (status ${status}):\n${compile_log}")
 endif()
 execute_process(COMMAND ${VVP} -n ${SCRATCH}/device_tb.vvp RESULT_VARIABLE status
                 OUTPUT_VARIABLE out ERROR_VARIABLE out)

@@ -34,7 +34,13 @@ Model parse_model(const std::string& text) {
   if (text == "pin") return Model::pin;
   if (text == "core") return Model::core;
   if (text == "tlm") return Model::tlm;
+#ifdef SPECULAR_HAS_RTL_TWIN
   if (text == "rtl") return Model::rtl;
+#else
+  if (text == "rtl")
+    throw UsageError("--model rtl: this specular_tb was built without the RTL twin "
+                     "(configured with -DSPECULAR_BUILD_RTL=OFF); the choices here: pin, core, tlm");
+#endif
   throw UsageError("--model = '" + text + "' is not one of: " + model_names());
 }
 

@@ -10,6 +10,7 @@
 #include "Vspecular_device_w20.h"
 #include "specular/arith.h"
 #include "specular/twin/rom38_banks.h"
+#include "same_formats.h"
 
 namespace specular {
 
@@ -21,17 +22,6 @@ Widths rtl_alternate_widths() {
 }
 
 namespace {
-
-bool same_widths(const Widths& a, const Widths& b) {
-  const Formats fa{a}, fb{b};
-  const auto same = [](const FixedFormat& x, const FixedFormat& y) {
-    return x.is_signed == y.is_signed && x.int_bits == y.int_bits && x.frac_bits == y.frac_bits;
-  };
-  return same(fa.cos, fb.cos) && same(fa.n, fb.n) && same(fa.rgb, fb.rgb) &&
-         same(fa.mux4, fb.mux4) && same(fa.log2, fb.log2) && same(fa.reg9, fb.reg9) &&
-         same(fa.rom38, fb.rom38) && same(fa.norm, fb.norm) && same(fa.out, fb.out) &&
-         a.rom5_addr_bits == b.rom5_addr_bits;
-}
 
 std::uint64_t low_bits(code_t code, int width) {
   return static_cast<std::uint64_t>(code) & ((std::uint64_t{1} << width) - 1);
@@ -189,9 +179,9 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
 RtlCycleModel::RtlCycleModel(const Config& config) : config_(config) {
   const Formats formats(config.widths);
   arith::Rom38Table check(formats, config);  // a device the core refuses, the twin refuses too
-  if (same_widths(config.widths, Widths{}))
+  if (same_formats(config.widths, Widths{}))
     engine_ = std::make_unique<VerilatedEngine<Vspecular_device_fast>>(config, formats);
-  else if (same_widths(config.widths, rtl_alternate_widths()))
+  else if (same_formats(config.widths, rtl_alternate_widths()))
     engine_ = std::make_unique<VerilatedEngine<Vspecular_device_w20>>(config, formats);
   else
     throw std::invalid_argument(

@@ -11,25 +11,9 @@
 
 #include "specular/arith.h"
 #include "specular/twin/rom38_banks.h"
+#include "same_formats.h"
 
 namespace specular {
-
-namespace {
-
-/// True when `f` are the formats the model was verilated with (rtl/ parameters'
-/// defaults, which are docs/design.md's: the default Widths).
-bool default_formats(const Formats& f) {
-  const Formats d{Widths{}};
-  const auto same = [](const FixedFormat& a, const FixedFormat& b) {
-    return a.is_signed == b.is_signed && a.int_bits == b.int_bits && a.frac_bits == b.frac_bits;
-  };
-  return same(f.cos, d.cos) && same(f.n, d.n) && same(f.rgb, d.rgb) && same(f.mux4, d.mux4) &&
-         same(f.log2, d.log2) && same(f.reg9, d.reg9) && same(f.rom38, d.rom38) &&
-         same(f.norm, d.norm) && same(f.out, d.out) &&
-         f.widths.rom5_addr_bits == d.widths.rom5_addr_bits;
-}
-
-}  // namespace
 
 /// The verilated model (plain C++, evaluated from this module's one process) and
 /// Verilator's waveform writer.
@@ -55,7 +39,7 @@ struct RtlDevice::Verilated {
 
 RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
     : DevicePins(name), config_(config), formats_(config.widths) {
-  if (!default_formats(formats_))
+  if (!same_formats(config.widths, Widths{}))
     throw std::invalid_argument(
         "the RTL twin is verilated at the default widths of docs/design.md; "
         "this Config asks for others (use --model pin or core for other widths)");

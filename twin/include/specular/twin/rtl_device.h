@@ -1,6 +1,6 @@
-// The RTL twin behind the pin interface: rtl/specular_device.v, verilated into a
-// SystemC module, wrapped so that DeviceHarness, the protocol checker and specular_tb
-// drive it exactly as they drive the SystemC netlist.
+// The RTL twin behind the pin interface: rtl/specular_device.v, verilated into C++
+// and evaluated from this SystemC module, so that DeviceHarness, the protocol checker
+// and specular_tb drive it exactly as they drive the SystemC netlist.
 #pragma once
 
 #include <memory>
@@ -15,9 +15,9 @@
 namespace specular {
 
 /// Pins 17–35 (DevicePins), as SpecularDevice has them. Inside, the
-/// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to every
-/// input pin, that copies the pins into the model, evaluates it and writes its
-/// outputs back, sign-extending the signed buses. One process activation per input
+/// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to the
+/// input pins, that copies the pins into the model, evaluates it and writes the
+/// outputs that changed back, sign-extending the signed buses. One process activation per input
 /// change: Verilator's own SystemC wrapper, with signals of its port types and
 /// adapters in between, took about 4 process activations per clock edge and ran
 /// slower than the netlist (docs/performance.md). Policies reach the model as its
@@ -26,7 +26,7 @@ namespace specular {
 /// (rom38_banks.h, docs/rtl.md); pins 19 and 20 carry the constants h and a.
 ///
 /// The model is verilated at the default widths (docs/design.md); a Config with other
-/// widths is refused with std::invalid_argument.
+/// widths, or one the core refuses, is refused with std::invalid_argument.
 class RtlDevice : public DevicePins {
  public:
   /// `real_views` is accepted for DeviceHarness's sake and refused when true: the
@@ -61,7 +61,7 @@ class RtlDevice : public DevicePins {
   ProtocolChecker protocol_checker{"protocol_checker"};
 
  private:
-  struct Verilated;  // the verilated module and its typed signals (rtl_device.cpp)
+  struct Verilated;  // the verilated model, its VCD writer, the pins' channels (rtl_device.cpp)
 
   void before_end_of_elaboration() override;
   void end_of_elaboration() override;

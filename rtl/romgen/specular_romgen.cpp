@@ -279,6 +279,10 @@ int check_dump(const Options& o) {
 
 }  // namespace
 
+// The library links SystemC, whose shared object asks for sc_main wherever the linker
+// keeps it (the sanitizer builds do); this tool never starts a simulation.
+extern "C" int sc_main(int, char**) { return 0; }
+
 int main(int argc, char** argv) {
   try {
     const Options o = parse(argc, argv);

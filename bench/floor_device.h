@@ -37,7 +37,7 @@ class FloorDevice : public specular::DevicePins {
   const specular::Formats& formats() const { return formats_; }
   specular::code_t constant_h19() const { return specular::pin19_code(config_); }
   specular::code_t constant_a20() const { return specular::pin20_code(config_); }
-  void trace(sc_core::sc_trace_file*) const {}
+  void trace(sc_core::sc_trace_file*) const override {}
 
  private:
   void start_of_simulation() override {

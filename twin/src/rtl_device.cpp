@@ -47,7 +47,6 @@ RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool re
     throw std::invalid_argument(
         "the RTL twin has no real-valued views: its VCD holds the RTL's own nets as codes "
         "(waveforms/specular_rtl.gtkw shows them as real numbers)");
-  SPECULAR_HAS_PROCESS(RtlDevice);
   rtl_ = std::make_unique<Verilated>();
   // The policies, tied off for the life of the device (configuration inputs).
   rtl_->top.cfg_literal = config.saturation == Saturation::literal;

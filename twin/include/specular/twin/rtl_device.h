@@ -42,7 +42,7 @@ class RtlDevice : public DevicePins {
 
   /// The SystemC trace file gets nothing from the twin: its nets are traced by
   /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw).
-  void trace(sc_core::sc_trace_file*) const {}
+  void trace(sc_core::sc_trace_file*) const override {}
   /// Trace every net of the RTL (pins, Fig. 1's buses, control unit 16) to `path`
   /// from the start of simulation on. Call before sc_start (std::logic_error after).
   void open_vcd(const std::string& path);

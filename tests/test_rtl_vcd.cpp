@@ -23,6 +23,7 @@
 #include "specular/format.h"
 #include "specular/reference.h"
 #include "support/scratch.h"
+#include "support/subprocess.h"
 #include "support/vcd.h"
 
 namespace fs = std::filesystem;
@@ -31,6 +32,7 @@ namespace specular {
 namespace {
 
 using testing_support::code_at;
+using testing_support::slurp;
 using testing_support::parse_vcd;
 using testing_support::Vcd;
 using testing_support::scratch_subdir;
@@ -40,13 +42,6 @@ const fs::path source_dir = SPECULAR_SOURCE_DIR;
 const std::string dev = "TOP.specular_device";
 const std::string cu16 = "TOP.specular_device.cu16";
 constexpr long long period_ps = 10000;  // specular_tb's default clock
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// specular_tb --model rtl on waveforms/example.csv with a VCD; returns the VCD's path.
 fs::path make_rtl_vcd(const fs::path& dir) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "support/scratch.h"
+#include "support/subprocess.h"
 #include "support/vcd.h"
 
 namespace fs = std::filesystem;
@@ -35,15 +36,9 @@ const fs::path source_dir = SPECULAR_SOURCE_DIR;
 using specular::testing_support::scratch_subdir;
 
 using specular::testing_support::code_at;
+using specular::testing_support::slurp;
 using specular::testing_support::parse_vcd;
 using specular::testing_support::Vcd;
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// Runs the README's waveform command into `dir` (plus `extra` options); returns the
 /// VCD's path.

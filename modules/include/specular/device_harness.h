@@ -123,7 +123,7 @@ DeviceHarness<Device>::DeviceHarness(sc_core::sc_module_name name, const Config&
   dut.pin33_load_b(pin33_load_b);
   dut.pin34_carry(pin34_carry);
   dut.pin35_done(pin35_done);
-  // Pins 19 and 20 are wired constants (spec §2 Decisions): ½ and 1.0.
+  // Pins 19 and 20 carry the constants h and a (½ and 1.0 under the patent's constants).
   pin19_h.write(dut.constant_h19());
   pin20_a.write(dut.constant_a20());
 

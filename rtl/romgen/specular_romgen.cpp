@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "specular/arith.h"
-#include "specular/twin/rom38_banks.h"
+#include "specular/rom38_banks.h"
 #include "specular/constants.h"
 #include "specular/format.h"
 
@@ -36,7 +36,7 @@ using specular::Normalisation;
 using specular::Widths;
 
 /// ROM 38's banks: one per (constants, normalisation) pair, at rom38_bank() (the RTL's
-/// cfg_rom38_bank input; specular/twin/rom38_banks.h). A pair whose table the device
+/// cfg_rom38_bank input; specular/rom38_banks.h). A pair whose table the device
 /// refuses (a word ROM 38 cannot hold) leaves its bank zero, as unused banks are.
 std::vector<std::optional<specular::arith::Rom38Table>> rom38_banks(const Formats& f, int bank_bits) {
   std::vector<std::optional<specular::arith::Rom38Table>> banks(std::size_t{1} << bank_bits);

@@ -33,7 +33,7 @@ module specular_device_tb;
   // Default widths (docs/design.md), as specular_tb uses them.
   localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 8;
   localparam REG9_W = 37, REG9_FRAC = 22, OUT_W = 32, ROM38_W = 25, NORM_W = 31;
-  localparam BANK_BITS = 4;     // bank = 4 * constants + normalisation (twin/rom38_banks.h)
+  localparam BANK_BITS = 4;     // bank = 4 * constants + normalisation (modules/include/specular/rom38_banks.h)
 
   // ---- device ----
   reg  [COS_FRAC:0]           pin17_cos = 0;

@@ -9,7 +9,7 @@
 #include "Vspecular_device_fast.h"
 #include "Vspecular_device_w20.h"
 #include "specular/arith.h"
-#include "specular/twin/rom38_banks.h"
+#include "specular/rom38_banks.h"
 #include "same_formats.h"
 
 namespace specular {

@@ -1,6 +1,7 @@
 // ROM 38 of the RTL holds one image per device that can be built: one bank per
 // (constants, normalisation) pair, chosen by its configuration input cfg_rom38_bank.
-// Written once for the image generator (rtl/romgen) and the twin's wrappers (twin/).
+// Written once, in the library below both of its users: the image generator
+// (rtl/romgen) and the twin's wrappers (twin/).
 #pragma once
 
 #include "specular/core.h"

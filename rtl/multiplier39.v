@@ -1,6 +1,7 @@
 // Multiplier 39: register 9 (signed) x ROM 38's K(n) (unsigned), SHIFT fraction bits
-// dropped rounding half up, saturated to the norm format (between the two passes
-// register 9 holds up to ~16 000; that saturates silently, by design).
+// dropped rounding half up, saturated to the norm format: the shared primitive
+// multiply_round_saturate.v at multiplier 39's widths (between the two passes register
+// 9 holds up to ~16 000; that saturates silently, by design).
 // SHIFT = REG9_FRAC + ROM38_FRAC - NORM_FRAC. Same bits as arith::mul39.
 `default_nettype none
 
@@ -14,29 +15,11 @@ module multiplier39 #(
   input  wire [K_W-1:0]   k,
   output wire [OUT_W-1:0] norm
 );
-  localparam PROD_W = A_W + K_W + 1;
-  localparam SUM_W = (PROD_W + 1 > SHIFT + OUT_W) ? PROD_W + 1 : SHIFT + OUT_W;
-
-  wire signed [A_W-1:0] a = reg9;
-  wire signed [K_W:0] b = {1'b0, k};  // unsigned, one sign bit added
-  wire signed [SUM_W-1:0] full = a * b;
-  localparam [SUM_W-1:0] BIAS = (SHIFT > 0) ? ({{(SUM_W-1){1'b0}}, 1'b1} << (SHIFT - 1)) : 0;
-  wire [SUM_W-1:0] biased = full + BIAS;
-
-  // floor(biased / 2^SHIFT) fits the output when every bit from OUT_W-1 up is a copy
-  // of the sign; otherwise saturate to the format's minimum or maximum code.
-  wire [SUM_W-SHIFT-OUT_W:0] above = biased[SUM_W-1:SHIFT+OUT_W-1];
-  wire in_range = (above == {(SUM_W-SHIFT-OUT_W+1){1'b0}}) ||
-                  (above == {(SUM_W-SHIFT-OUT_W+1){1'b1}});
-  wire negative = biased[SUM_W-1];
-  assign norm = in_range ? biased[SHIFT +: OUT_W]
-                         : (negative ? {1'b1, {(OUT_W-1){1'b0}}} : {1'b0, {(OUT_W-1){1'b1}}});
-
-  generate
-    if (SHIFT > 0) begin : dropped
-      wire unused_ok = &{1'b0, biased[SHIFT-1:0]};
-    end
-  endgenerate
+  multiply_round_saturate #(.A_W(A_W), .B_W(K_W), .OUT_W(OUT_W), .SHIFT(SHIFT)) mul (
+    .a(reg9),
+    .b(k),
+    .out(norm)
+  );
 endmodule
 
 `default_nettype wire

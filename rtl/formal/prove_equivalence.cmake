@@ -1,4 +1,5 @@
-# One formal equivalence: an RTL multiplier (GOLD_SOURCE, module TOP) against its
+# One formal equivalence: an RTL multiplier (GOLD_SOURCE: its file and the primitives it
+# instantiates, separated by '|'; module TOP) against its
 # behavioural reference (multiplier_refs.v, module TOP_ref) at the parameters PARAMS
 # ("NAME=VALUE;..."), by a miter and a SAT proof that its trigger never rises, for
 # every input. EXPECT=proved: the proof must succeed. EXPECT=refuted: the reference is
@@ -25,14 +26,18 @@ foreach(param ${PARAMS})
   string(APPEND chparams "chparam -set ${param_words} ${TOP} ${TOP}_ref\n")
 endforeach()
 
+string(REPLACE "|" " " gold_sources "${GOLD_SOURCE}")
+
 file(REMOVE_RECURSE ${SCRATCH})
 file(MAKE_DIRECTORY ${SCRATCH})
 # No optimisation before the proof: the two multiplies stay two $mul cells of
-# different widths (the RTL's exact width, the reference's 64 bits).
+# different widths (the RTL's exact width, the reference's 64 bits). `hierarchy`
+# derives the primitives at the parameters the multiplier passes them.
 file(WRITE ${SCRATCH}/prove.ys
-"read_verilog ${GOLD_SOURCE}
+"read_verilog ${gold_sources}
 read_verilog ${ref_define}${REF_SOURCE}
-${chparams}proc
+${chparams}hierarchy
+proc
 miter -equiv -flatten ${TOP} ${TOP}_ref miter
 hierarchy -top miter
 opt_clean

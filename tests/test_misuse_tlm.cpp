@@ -155,12 +155,14 @@ std::string kind_name(const testing::TestParamInfo<Kind>& info) {
   return info.param == Kind::lt ? "lt" : "pin";
 }
 
-// Holes of the register map (docs/tlm.md), misaligned and beyond-the-map offsets.
+// Holes of the register map (docs/misuse.md's address map), misaligned and
+// beyond-the-map offsets.
 TEST_P(MisuseTlm, AddressErrorForUnmappedMisalignedAndRunawayBursts) {
   run(GetParam(), [](Initiator& i) {
     for (const std::uint64_t address :
          {std::uint64_t{0x01C}, std::uint64_t{0x034}, std::uint64_t{0x04C}, std::uint64_t{0x074},
-          std::uint64_t{0x0FC}, std::uint64_t{0x2000}, std::uint64_t{0x7000}, std::uint64_t{0x8000},
+          std::uint64_t{0x098}, std::uint64_t{0x0AC}, std::uint64_t{0x0FC}, std::uint64_t{0x2000},
+          std::uint64_t{0x7000}, std::uint64_t{0x8000},
           std::uint64_t{0xFFFFFFF0}, std::uint64_t{0x022}, std::uint64_t{0x001},
           std::uint64_t{0x1002}}) {
       std::uint32_t data = 0;

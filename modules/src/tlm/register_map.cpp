@@ -92,18 +92,92 @@ std::string hex(std::uint32_t value, int digits) {
   s << value;
   return s.str();
 }
+
+std::string offsets(std::uint32_t first, std::uint32_t last) {
+  return first == last ? hex(first, 3) : hex(first, 3) + "–" + hex(last, 3);
+}
+
+/// A register's offset, or a window's first and last byte.
+std::string row_offsets(const RegisterInfo& row) {
+  return row.words == 1 ? hex(row.offset, 3) : offsets(row.offset, row.end() - 1);
+}
+
+/// The reset cell: one value, or the words of an alias window that differ from it.
+std::string reset_cell(const RegisterInfo& row) {
+  std::string cell = hex(row.reset, 8);
+  for (std::uint32_t w = 0; w < row.words && w < operand_words; ++w) {
+    const std::uint32_t value = reset_of_word(row, w);
+    if (value == row.reset) continue;
+    const Reg alias = row.reg == Reg::operands ? operand_register(w) : result_register(w);
+    cell += "; word " + std::to_string(w) + " (" + info(alias).name + "): " + hex(value, 8);
+  }
+  return cell;
+}
+
+std::string cause_cell(ErrorCause cause) {
+  return std::string("`") + to_string(cause) + "` (" + std::to_string(static_cast<int>(cause)) +
+         ")";
+}
+
+/// What refuses a write to `row`, with the TLM response.
+std::string write_refusals(const RegisterInfo& row) {
+  switch (row.access) {
+    case Access::read_only:
+      return cause_cell(ErrorCause::read_only) + ", `TLM_COMMAND_ERROR_RESPONSE`";
+    case Access::write_1_to_clear: return "none: 1s clear their flags, 0s change nothing";
+    case Access::read_write:
+    case Access::self_clearing: break;
+  }
+  std::string causes;
+  if (row.reg == Reg::operands) {  // word by word, as the registers behind it
+    causes = "each word as its register: ";
+    std::string seen;
+    for (std::uint32_t w = 0; w < operand_words; ++w) {
+      const ErrorCause cause = info(operand_register(w)).value_check;
+      if (cause == ErrorCause::none || seen.find(to_string(cause)) != std::string::npos) continue;
+      if (!seen.empty()) causes += ", ";
+      causes += cause_cell(cause);
+      seen += std::string(to_string(cause)) + " ";
+    }
+    causes += "; ";
+  } else if (row.value_check != ErrorCause::none) {
+    causes = cause_cell(row.value_check) + "; ";
+  }
+  return causes + cause_cell(ErrorCause::busy) +
+         " while an operation is in flight; `TLM_GENERIC_ERROR_RESPONSE`";
+}
+
+std::string hole_row(std::uint32_t first, std::uint32_t last) {
+  return "| " + offsets(first, last) + " | *hole* | — | — | " + cause_cell(ErrorCause::address) +
+         ", `TLM_ADDRESS_ERROR_RESPONSE`, reads too |\n";
+}
 }  // namespace
 
 std::string register_map_markdown() {
   std::ostringstream s;
   s << "| offset | name | access | reset | description |\n";
   s << "|---|---|---|---|---|\n";
+  for (const RegisterInfo& row : register_map)
+    s << "| " << row_offsets(row) << " | " << row.name << " | "
+      << to_string(row.access) << " | " << reset_cell(row) << " | " << row.description << " |\n";
+  return s.str();
+}
+
+std::string address_map_markdown() {
+  std::ostringstream s;
+  s << "| offset | register | access | reset | a write is refused with |\n";
+  s << "|---|---|---|---|---|\n";
+  std::uint32_t next = 0;  // the first byte not yet listed
   for (const RegisterInfo& row : register_map) {
-    s << "| " << hex(row.offset, 3);
-    if (row.words > 1) s << "–" << hex(row.end() - 1, 3);
-    s << " | " << row.name << " | " << to_string(row.access) << " | " << hex(row.reset, 8)
-      << " | " << row.description << " |\n";
+    if (row.offset > next) s << hole_row(next, row.offset - 1);
+    s << "| " << row_offsets(row) << " | " << row.name << " | "
+      << to_string(row.access) << " | " << reset_cell(row) << " | " << write_refusals(row)
+      << " |\n";
+    next = row.end();
   }
+  if (next < map_size) s << hole_row(next, map_size - 1);
+  s << "| ≥ " << hex(map_size, 3) << " | outside the map | — | — | "
+    << cause_cell(ErrorCause::address) << ", `TLM_ADDRESS_ERROR_RESPONSE`, reads too |\n";
   return s.str();
 }
 

@@ -140,7 +140,7 @@ std::uint32_t SpecularTarget::peek(const RegisterInfo& row, std::uint32_t index)
     case Reg::status: return status_word();
     case Reg::control: return 0;  // START is self-clearing
     case Reg::operands: return peek(info(operand_register(index)), 0);
-    case Reg::results: return words_[index_of(Reg::out_r) + index];
+    case Reg::results: return word(result_register(index));
     case Reg::batch_cos: return batch_cos_[index];
     case Reg::batch_out: return batch_out_[index];
     default: return word(row.reg);
@@ -160,21 +160,17 @@ void SpecularTarget::read(const RegisterInfo& row, std::uint32_t first, std::uin
 // ---- writes ------------------------------------------------------------------------
 
 ErrorCause SpecularTarget::check_value(Reg reg, std::uint32_t value) const {
-  switch (reg) {
-    case Reg::cos:
-    case Reg::batch_cos:
-      return value > static_cast<std::uint64_t>(formats_.cos.one()) ? ErrorCause::cos_out_of_range
-                                                                    : ErrorCause::none;
-    case Reg::n:
-      return (value < n_min || value > n_max) ? ErrorCause::n_out_of_range : ErrorCause::none;
-    case Reg::r:
-    case Reg::g:
-    case Reg::b:
-      return value > static_cast<std::uint64_t>(formats_.rgb.max_code())
-                 ? ErrorCause::rgb_out_of_range
-                 : ErrorCause::none;
-    case Reg::control:
-      return (value & ~control_bits::defined) ? ErrorCause::reserved_bits : ErrorCause::none;
+  // Which rule applies is the register map's value_check; the limits are the formats'.
+  const ErrorCause rule = info(reg).value_check;
+  switch (rule) {
+    case ErrorCause::cos_out_of_range:
+      return value > static_cast<std::uint64_t>(formats_.cos.one()) ? rule : ErrorCause::none;
+    case ErrorCause::n_out_of_range:
+      return (value < n_min || value > n_max) ? rule : ErrorCause::none;
+    case ErrorCause::rgb_out_of_range:
+      return value > static_cast<std::uint64_t>(formats_.rgb.max_code()) ? rule : ErrorCause::none;
+    case ErrorCause::reserved_bits:
+      return (value & ~control_bits::defined) ? rule : ErrorCause::none;
     default: return ErrorCause::none;
   }
 }
@@ -231,9 +227,9 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
       if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
       // All or nothing: check every word before any is stored or computed.
       for (std::uint32_t i = 0; i < words; ++i)
-        if (check_value(Reg::batch_cos, load(data + 4 * i)) != ErrorCause::none)
-          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::cos_out_of_range,
-                        address + 4 * i);
+        if (const ErrorCause cause = check_value(Reg::batch_cos, load(data + 4 * i));
+            cause != ErrorCause::none)
+          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i);
       std::memcpy(&batch_cos_[first], data, 4 * words);
       run(&batch_cos_[first], words, &batch_out_[3 * first], delay);
       return tlm::TLM_OK_RESPONSE;

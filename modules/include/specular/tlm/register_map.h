@@ -62,6 +62,26 @@ enum class Reg : std::uint8_t {
 constexpr std::size_t register_count = static_cast<std::size_t>(Reg::count);
 constexpr std::size_t index_of(Reg reg) { return static_cast<std::size_t>(reg); }
 
+/// Why the last access was refused (STATUS bits 15:8).
+enum class ErrorCause : std::uint8_t {
+  none = 0,
+  cos_out_of_range = 1,  ///< COS / BATCH_COS word above 1.0 (65536 for U1.16)
+  n_out_of_range = 2,    ///< N outside 1..1000
+  rgb_out_of_range = 3,  ///< R, G or B above 255 (the RGB format's maximum)
+  read_only = 4,         ///< write to a read-only register
+  reserved_bits = 5,     ///< CONTROL written with an undefined bit set
+  busy = 6,              ///< START or operand write while an operation is in flight
+  address = 7,           ///< unmapped or misaligned address, or a burst past a window
+  burst = 8,             ///< length not a multiple of 4, burst on a register, streaming
+  byte_enable = 9,       ///< byte enables other than "all bytes"
+  command = 10,          ///< a command other than read, write, ignore
+};
+
+const char* to_string(ErrorCause cause);
+/// What the cause means, for docs and error messages.
+const char* describe(ErrorCause cause);
+constexpr std::uint8_t error_cause_count = 11;
+
 /// One row of the register map.
 struct RegisterInfo {
   Reg reg;
@@ -69,7 +89,10 @@ struct RegisterInfo {
   std::uint32_t offset;  ///< byte offset from the target's base address
   std::uint32_t words;   ///< 1 for a register, more for a window (burst-accessible)
   Access access;
-  std::uint32_t reset;   ///< value after construction
+  std::uint32_t reset;   ///< value after construction (a window of aliases: reset_of_word)
+  /// Why a written value is refused (none: any value is taken). Read-only rows need
+  /// none: every write to them is refused with read_only.
+  ErrorCause value_check;
   const char* description;
 
   constexpr std::uint32_t end() const { return offset + 4 * words; }
@@ -122,58 +145,39 @@ constexpr std::uint32_t config_word(Normalisation normalisation, Saturation satu
 }
 std::uint32_t config_word(const Config& config);
 
-/// Why the last access was refused (STATUS bits 15:8).
-enum class ErrorCause : std::uint8_t {
-  none = 0,
-  cos_out_of_range = 1,  ///< COS / BATCH_COS word above 1.0 (65536 for U1.16)
-  n_out_of_range = 2,    ///< N outside 1..1000
-  rgb_out_of_range = 3,  ///< R, G or B above 255 (the RGB format's maximum)
-  read_only = 4,         ///< write to a read-only register
-  reserved_bits = 5,     ///< CONTROL written with an undefined bit set
-  busy = 6,              ///< START or operand write while an operation is in flight
-  address = 7,           ///< unmapped or misaligned address, or a burst past a window
-  burst = 8,             ///< length not a multiple of 4, burst on a register, streaming
-  byte_enable = 9,       ///< byte enables other than "all bytes"
-  command = 10,          ///< a command other than read, write, ignore
-};
-
-const char* to_string(ErrorCause cause);
-/// What the cause means, for docs and error messages.
-const char* describe(ErrorCause cause);
-constexpr std::uint8_t error_cause_count = 11;
 
 /// THE register map. Offsets are bytes from the base address.
 inline constexpr std::array<RegisterInfo, register_count> register_map{{
     // clang-format off
-    {Reg::id,             "ID",             0x000, 1, Access::read_only,        device_id,   "Identification: 0x00059965 (patent UA 59965 U)"},
-    {Reg::version,        "VERSION",        0x004, 1, Access::read_only,        map_version, "Register map version: (major << 16) + minor"},
-    {Reg::config,         "CONFIG",         0x008, 1, Access::read_only,        config_word(Normalisation::patent, Saturation::clamp, 16, 13, 8),
+    {Reg::id,             "ID",             0x000, 1, Access::read_only,        device_id,   ErrorCause::none,              "Identification: 0x00059965 (patent UA 59965 U)"},
+    {Reg::version,        "VERSION",        0x004, 1, Access::read_only,        map_version, ErrorCause::none,              "Register map version: (major << 16) + minor"},
+    {Reg::config,         "CONFIG",         0x008, 1, Access::read_only,        config_word(Normalisation::patent, Saturation::clamp, 16, 13, 8), ErrorCause::none,
                                                                                              "[1:0] normalisation (0 patent, 1 energy, 2 none, 3 device-energy), [4] saturation (0 clamp, 1 literal), [6:5] constants (0 patent, 1 minimax-half, 2 minimax), [15:8] COS fraction bits, [23:16] OUT fraction bits, [31:24] RGB bits; fixed at construction (reset shown for the defaults)"},
-    {Reg::status,         "STATUS",         0x00C, 1, Access::write_1_to_clear, 0,           "[0] busy, [1] done (W1C, drives done_irq), [2] error (W1C, clears cause and ERROR_ADDRESS), [15:8] error cause"},
-    {Reg::control,        "CONTROL",        0x010, 1, Access::self_clearing,    0,           "[0] START: run one operation on COS, N, R, G, B; other bits refused; reads 0"},
-    {Reg::batch_capacity, "BATCH_CAPACITY", 0x014, 1, Access::read_only,        batch_capacity, "Operations per batch transaction (BATCH_COS words)"},
-    {Reg::error_address,  "ERROR_ADDRESS",  0x018, 1, Access::read_only,        0,           "Byte offset of the last refused access (the offending word in a burst)"},
-    {Reg::cos,            "COS",            0x020, 1, Access::read_write,       0,           "cos λ code, U1.16: 0..65536 (= 1.0); larger is refused"},
-    {Reg::n,              "N",              0x024, 1, Access::read_write,       1,           "Specular exponent n: 1..1000; other values are refused"},
-    {Reg::r,              "R",              0x028, 1, Access::read_write,       0,           "Light intensity R (register 10): 0..255"},
-    {Reg::g,              "G",              0x02C, 1, Access::read_write,       0,           "Light intensity G (register 11): 0..255"},
-    {Reg::b,              "B",              0x030, 1, Access::read_write,       0,           "Light intensity B (register 12): 0..255"},
-    {Reg::out_r,          "OUT_R",          0x040, 1, Access::read_only,        0,           "Pin 24: K·A·R, S18.13 two's complement"},
-    {Reg::out_g,          "OUT_G",          0x044, 1, Access::read_only,        0,           "Pin 25: K·A·G, S18.13 two's complement"},
-    {Reg::out_b,          "OUT_B",          0x048, 1, Access::read_only,        0,           "Pin 26: K·A·B, S18.13 two's complement"},
-    {Reg::reg1,           "REG1",           0x050, 1, Access::read_only,        0,           "Inspection: register 1 (cos code used) of the last operation"},
-    {Reg::reg9_pass1_lo,  "REG9_PASS1_LO",  0x054, 1, Access::read_only,        0,           "Inspection: register 9 after pass 1, S14.22, bits 31:0"},
-    {Reg::reg9_pass1_hi,  "REG9_PASS1_HI",  0x058, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
-    {Reg::reg9_pass2_lo,  "REG9_PASS2_LO",  0x05C, 1, Access::read_only,        0,           "Inspection: register 9 after pass 2 (A), S14.22, bits 31:0"},
-    {Reg::reg9_pass2_hi,  "REG9_PASS2_HI",  0x060, 1, Access::read_only,        0,           "... bits 63:32 (sign-extended)"},
-    {Reg::rom38_k,        "ROM38_K",        0x064, 1, Access::read_only,        0,           "Inspection: ROM 38 word s·K(n), U9.16"},
-    {Reg::norm39,         "NORM39",         0x068, 1, Access::read_only,        0,           "Inspection: multiplier 39 output s·K·A, S10.20"},
-    {Reg::pin19_h,        "PIN19_H",        0x06C, 1, Access::read_only,        0x80,        "Pin 19: the constant h, U10.8 code (0x80 = ½, the patent's); fixed at construction by CONFIG's constants"},
-    {Reg::pin20_a,        "PIN20_A",        0x070, 1, Access::read_only,        0x400000,    "Pin 20: the constant a, S14.22 code (0x400000 = 1.0, the patent's); fixed at construction by CONFIG's constants"},
-    {Reg::operands,       "OPERANDS",       0x080, 6, Access::read_write,       0,           "Operand block: words 0–5 are COS, N, R, G, B, CONTROL (the registers above); a burst writes any contiguous part, all words checked before any is stored; START in word 5 then runs the operation"},
-    {Reg::results,        "RESULTS",        0x0A0, 3, Access::read_only,        0,           "Result block: OUT_R, OUT_G, OUT_B (the registers above) in one burst read"},
-    {Reg::batch_cos,      "BATCH_COS",      0x1000, batch_capacity, Access::read_write, 0,   "Batch window: a burst write of k cos codes at word i runs k operations (N, R, G, B shared), results to BATCH_OUT word 3i"},
-    {Reg::batch_out,      "BATCH_OUT",      0x4000, 3 * batch_capacity, Access::read_only, 0, "Batch results: OUT_R, OUT_G, OUT_B of operation i at words 3i, 3i+1, 3i+2"},
+    {Reg::status,         "STATUS",         0x00C, 1, Access::write_1_to_clear, 0,           ErrorCause::none,              "[0] busy, [1] done (W1C, drives done_irq), [2] error (W1C, clears cause and ERROR_ADDRESS), [15:8] error cause"},
+    {Reg::control,        "CONTROL",        0x010, 1, Access::self_clearing,    0,           ErrorCause::reserved_bits,     "[0] START: run one operation on COS, N, R, G, B; other bits refused; reads 0"},
+    {Reg::batch_capacity, "BATCH_CAPACITY", 0x014, 1, Access::read_only,        batch_capacity, ErrorCause::none,             "Operations per batch transaction (BATCH_COS words)"},
+    {Reg::error_address,  "ERROR_ADDRESS",  0x018, 1, Access::read_only,        0,           ErrorCause::none,              "Byte offset of the last refused access (the offending word in a burst)"},
+    {Reg::cos,            "COS",            0x020, 1, Access::read_write,       0,           ErrorCause::cos_out_of_range,  "cos λ code, U1.16: 0..65536 (= 1.0); larger is refused"},
+    {Reg::n,              "N",              0x024, 1, Access::read_write,       1,           ErrorCause::n_out_of_range,    "Specular exponent n: 1..1000; other values are refused"},
+    {Reg::r,              "R",              0x028, 1, Access::read_write,       0,           ErrorCause::rgb_out_of_range,  "Light intensity R (register 10): 0..255"},
+    {Reg::g,              "G",              0x02C, 1, Access::read_write,       0,           ErrorCause::rgb_out_of_range,  "Light intensity G (register 11): 0..255"},
+    {Reg::b,              "B",              0x030, 1, Access::read_write,       0,           ErrorCause::rgb_out_of_range,  "Light intensity B (register 12): 0..255"},
+    {Reg::out_r,          "OUT_R",          0x040, 1, Access::read_only,        0,           ErrorCause::none,              "Pin 24: K·A·R, S18.13 two's complement"},
+    {Reg::out_g,          "OUT_G",          0x044, 1, Access::read_only,        0,           ErrorCause::none,              "Pin 25: K·A·G, S18.13 two's complement"},
+    {Reg::out_b,          "OUT_B",          0x048, 1, Access::read_only,        0,           ErrorCause::none,              "Pin 26: K·A·B, S18.13 two's complement"},
+    {Reg::reg1,           "REG1",           0x050, 1, Access::read_only,        0,           ErrorCause::none,              "Inspection: register 1 (cos code used) of the last operation"},
+    {Reg::reg9_pass1_lo,  "REG9_PASS1_LO",  0x054, 1, Access::read_only,        0,           ErrorCause::none,              "Inspection: register 9 after pass 1, S14.22, bits 31:0"},
+    {Reg::reg9_pass1_hi,  "REG9_PASS1_HI",  0x058, 1, Access::read_only,        0,           ErrorCause::none,              "... bits 63:32 (sign-extended)"},
+    {Reg::reg9_pass2_lo,  "REG9_PASS2_LO",  0x05C, 1, Access::read_only,        0,           ErrorCause::none,              "Inspection: register 9 after pass 2 (A), S14.22, bits 31:0"},
+    {Reg::reg9_pass2_hi,  "REG9_PASS2_HI",  0x060, 1, Access::read_only,        0,           ErrorCause::none,              "... bits 63:32 (sign-extended)"},
+    {Reg::rom38_k,        "ROM38_K",        0x064, 1, Access::read_only,        0,           ErrorCause::none,              "Inspection: ROM 38 word s·K(n), U9.16"},
+    {Reg::norm39,         "NORM39",         0x068, 1, Access::read_only,        0,           ErrorCause::none,              "Inspection: multiplier 39 output s·K·A, S10.20"},
+    {Reg::pin19_h,        "PIN19_H",        0x06C, 1, Access::read_only,        0x80,        ErrorCause::none,              "Pin 19: the constant h, U10.8 code (0x80 = ½, the patent's); fixed at construction by CONFIG's constants"},
+    {Reg::pin20_a,        "PIN20_A",        0x070, 1, Access::read_only,        0x400000,    ErrorCause::none,              "Pin 20: the constant a, S14.22 code (0x400000 = 1.0, the patent's); fixed at construction by CONFIG's constants"},
+    {Reg::operands,       "OPERANDS",       0x080, 6, Access::read_write,       0,           ErrorCause::none,              "Operand block: words 0–5 are COS, N, R, G, B, CONTROL (the registers above); a burst writes any contiguous part, all words checked before any is stored; START in word 5 then runs the operation"},
+    {Reg::results,        "RESULTS",        0x0A0, 3, Access::read_only,        0,           ErrorCause::none,              "Result block: OUT_R, OUT_G, OUT_B (the registers above) in one burst read"},
+    {Reg::batch_cos,      "BATCH_COS",      0x1000, batch_capacity, Access::read_write, 0, ErrorCause::cos_out_of_range, "Batch window: a burst write of k cos codes at word i runs k operations (N, R, G, B shared), results to BATCH_OUT word 3i"},
+    {Reg::batch_out,      "BATCH_OUT",      0x4000, 3 * batch_capacity, Access::read_only, 0, ErrorCause::none, "Batch results: OUT_R, OUT_G, OUT_B of operation i at words 3i, 3i+1, 3i+2"},
     // clang-format on
 }};
 
@@ -204,6 +208,19 @@ constexpr Reg operand_register(std::uint32_t index) {
   return block[index];
 }
 constexpr std::uint32_t operand_words = 6;
+/// The single register behind word `index` (0..2) of the RESULTS block.
+constexpr Reg result_register(std::uint32_t index) {
+  constexpr Reg block[] = {Reg::out_r, Reg::out_g, Reg::out_b};
+  return block[index];
+}
+
+/// What word `index` of `row` reads after construction (the defaults shown for CONFIG,
+/// PIN19_H, PIN20_A): OPERANDS and RESULTS read the registers they alias.
+constexpr std::uint32_t reset_of_word(const RegisterInfo& row, std::uint32_t index) {
+  if (row.reg == Reg::operands) return info(operand_register(index)).reset;
+  if (row.reg == Reg::results) return info(result_register(index)).reset;
+  return row.reset;
+}
 static_assert(info(Reg::operands).words == operand_words &&
                   info(Reg::results).words == 3,
               "OPERANDS holds COS, N, R, G, B, CONTROL; RESULTS holds OUT_R, OUT_G, OUT_B");
@@ -211,9 +228,14 @@ static_assert(info(Reg::operands).words == operand_words &&
 /// The row whose range holds `offset`, or nullptr (unmapped or not word-aligned).
 const RegisterInfo* decode(std::uint64_t offset);
 
-/// The register map as a Markdown table (docs/tlm.md carries exactly this).
+// The docs' tables, printed from the table above (docs/tlm.md and docs/misuse.md carry
+// exactly these between marker comments; specular_register_docs rewrites them).
+/// The register map: offset, name, access, reset, description.
 std::string register_map_markdown();
-/// The error causes as a Markdown table.
+/// The error causes (STATUS[15:8]).
 std::string error_cause_markdown();
+/// The whole decoded space, holes included: access, reset value and what refuses a
+/// write (or any access, for a hole).
+std::string address_map_markdown();
 
 }  // namespace specular

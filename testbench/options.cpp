@@ -25,6 +25,7 @@ const std::map<std::string, std::string>& valued_options() {
       {"--policy", "one of: patent, energy, none, device-energy"},
       {"--constants", "one of: patent, minimax-half, minimax"},
       {"--saturation", "one of: clamp, literal"},
+      {"--width", "NAME=VALUE, NAME one of: " + width_names()},
       {"--clock-period", "a time, a multiple of 4 ps in [4 ps, 1 ms], e.g. 10ns"},
       {"--vcd", "a file name"},
       {"--format", "one of: text, csv, json"},
@@ -41,8 +42,8 @@ std::string with_option(const std::string& option, const std::string& message) {
 
 Options parse_options(const std::vector<std::string>& args) {
   Options o;
-  const Formats formats(o.config.widths);
   std::set<std::string> seen;
+  std::string rgb_value;
 
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string option = args[i];
@@ -72,7 +73,7 @@ Options parse_options(const std::vector<std::string>& args) {
         value = args[++i];
       }
     }
-    if (!seen.insert(option).second)
+    if (!seen.insert(option).second && option != "--width")  // one --width per width
       throw UsageError("option " + option + " is given more than once");
 
     try {
@@ -82,9 +83,7 @@ Options parse_options(const std::vector<std::string>& args) {
         o.n = parse_integer(value, "n", "[1, 1000]");
         check_n(o.n);
       } else if (option == "--rgb") {
-        o.rgb = parse_rgb_triplet(value, formats, "");
-        static const char* channels[3] = {"R", "G", "B"};
-        for (int ch = 0; ch < 3; ++ch) check_rgb(formats, o.rgb[ch], channels[ch]);
+        rgb_value = value;  // checked below, at the widths every --width has set
       } else if (option == "--input") {
         if (value.empty()) throw UsageError("the file name is empty");
         o.input_path = value;
@@ -108,6 +107,16 @@ Options parse_options(const std::vector<std::string>& args) {
         o.config.saturation = parse_saturation(value);
       } else if (option == "--constants") {
         o.config.constants = parse_constants(value);
+      } else if (option == "--width") {
+        const std::size_t equals = value.find('=');
+        if (equals == std::string::npos)
+          throw UsageError("'" + value + "' is not NAME=VALUE (NAME one of: " + width_names() + ")");
+        const std::string name = value.substr(0, equals);
+        const long long bits = parse_integer(value.substr(equals + 1), name, "[0, 63]");
+        if (bits < 0 || bits > 63)
+          throw UsageError(name + " = " + value.substr(equals + 1) +
+                           " is outside the allowed range [0, 63]");
+        set_width(o.config.widths, name, static_cast<int>(bits));
       } else if (option == "--clock-period") {
         o.clock_period_ps = parse_clock_period_ps(value);
       } else if (option == "--vcd") {
@@ -129,6 +138,25 @@ Options parse_options(const std::vector<std::string>& args) {
     }
   }
   if (o.help) return o;
+  try {
+    o.config.widths.validate();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--width: ") + e.what());
+  }
+  if (seen.count("--rgb")) {
+    const Formats widths_set(o.config.widths);
+    try {
+      o.rgb = parse_rgb_triplet(rgb_value, widths_set, "");
+      static const char* channels[3] = {"R", "G", "B"};
+      for (int ch = 0; ch < 3; ++ch) check_rgb(widths_set, o.rgb[ch], channels[ch]);
+    } catch (const UsageError& e) {
+      const std::string message = e.what();
+      if (message.rfind("--rgb", 0) == 0) throw;
+      throw UsageError(with_option("--rgb", message));
+    } catch (const std::exception& e) {
+      throw UsageError(with_option("--rgb", e.what()));
+    }
+  }
 
   // Exactly one source of computations.
   const bool point = seen.count("--cos") || seen.count("--n");
@@ -167,6 +195,28 @@ Options parse_options(const std::vector<std::string>& args) {
     throw UsageError("--vcd and --output name the same file '" + o.vcd_path + "'");
   return o;
 }
+
+namespace {
+/// width_names() in lines for the help text's right-hand column.
+std::string wrapped_width_names() {
+  const std::string indent(28, ' ');
+  std::string text, line;
+  std::string names = width_names() + ",";
+  for (std::size_t at = 0; at < names.size();) {
+    const std::size_t comma = names.find(',', at);
+    std::string word = names.substr(at, comma - at + 1);
+    if (!word.empty() && word[0] == ' ') word.erase(0, 1);
+    if (!line.empty() && line.size() + 1 + word.size() > 52) {
+      text += indent + line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+    at = comma + 1;
+  }
+  line.pop_back();  // the last comma
+  return text + indent + line;
+}
+}  // namespace
 
 std::string help_text() {
   return R"(specular_tb: drives the specular colour intensity device of UA 59965 U (Fig. 1-3)
@@ -211,6 +261,10 @@ Model and device:
                             s = 0.953465 (max |s*A - cos^n| 0.0734); minimax: a =
                             0.373026, h = 41/256, s = 1.664246 (0.0398). The approx
                             column is register 9, which peaks at 1/s
+  --width NAME=VALUE        a bus width other than docs/design.md's, once per width
+                            (e.g. --width rom5_word_bits=20 --width reg9_frac_bits=16,
+                            the RTL's other verilated set); NAME one of:
+)" + wrapped_width_names() + R"(
   --clock-period T          pin 28's period, e.g. 10ns (default), 2500ps, 1us; a multiple
                             of 4 ps (inputs change a quarter period before an edge)
                             in [4 ps, 1 ms]

@@ -184,3 +184,24 @@ TEST(CliOptions, RepeatedOptionsAndConflicts) {
   expect_error({"--sweep", "--real-views"}, {"--real-views", "needs --vcd"});
   expect_error({"--sweep", "--vcd", "x.vcd", "--real-views=yes"}, {"--real-views", "no value", "'yes'"});
 }
+
+// --width: one per width, repeatable; the RTL's w20 set; a bad name lists the names,
+// a bad value names the range; --rgb is checked at the widths set.
+TEST(CliOptions, WidthsOtherThanTheDefaults) {
+  const Options o = parse({"--random", "3", "--width", "rom5_word_bits=20",
+                           "--width=reg9_frac_bits=16"});
+  EXPECT_EQ(o.config.widths.rom5_word_bits, 20);
+  EXPECT_EQ(o.config.widths.reg9_frac_bits, 16);
+  EXPECT_EQ(o.config.widths.cos_frac_bits, 16) << "the others keep docs/design.md's widths";
+  EXPECT_EQ(parse({"--random", "3"}).config.widths.rom5_word_bits, 22);
+  expect_error({"--random", "3", "--width", "rom5_bits=20"},
+               {"--width", "'rom5_bits'", "rom5_word_bits", "out_frac_bits"});
+  expect_error({"--random", "3", "--width", "reg9_frac_bits=8"},
+               {"--width", "reg9_frac_bits = 8", "[16, 40]"});
+  expect_error({"--random", "3", "--width", "reg9_frac_bits"}, {"--width", "NAME=VALUE"});
+  expect_error({"--random", "3", "--width", "n_bits=ten"}, {"--width", "ten"});
+  // R = 300 fits 9-bit intensities, not the default 8 bits.
+  EXPECT_EQ(parse({"--cos", "1", "--n", "1", "--rgb", "300,0,0", "--width", "rgb_bits=9"}).rgb[0],
+            300u);
+  expect_error({"--cos", "1", "--n", "1", "--rgb", "300,0,0"}, {"--rgb", "300"});
+}

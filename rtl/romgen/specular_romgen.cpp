@@ -59,19 +59,6 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-struct WidthField {
-  const char* name;
-  int Widths::*member;
-};
-const WidthField kWidthFields[] = {
-    {"cos_frac_bits", &Widths::cos_frac_bits},     {"n_bits", &Widths::n_bits},
-    {"rgb_bits", &Widths::rgb_bits},               {"rom5_addr_bits", &Widths::rom5_addr_bits},
-    {"rom5_word_bits", &Widths::rom5_word_bits},   {"reg9_int_bits", &Widths::reg9_int_bits},
-    {"reg9_frac_bits", &Widths::reg9_frac_bits},   {"rom38_int_bits", &Widths::rom38_int_bits},
-    {"rom38_frac_bits", &Widths::rom38_frac_bits}, {"norm_int_bits", &Widths::norm_int_bits},
-    {"norm_frac_bits", &Widths::norm_frac_bits},   {"out_int_bits", &Widths::out_int_bits},
-    {"out_frac_bits", &Widths::out_frac_bits}};
-
 int parse_int(const std::string& what, const std::string& text) {
   std::size_t used = 0;
   int value = 0;
@@ -87,17 +74,14 @@ int parse_int(const std::string& what, const std::string& text) {
 
 void set_width(Widths& widths, const std::string& assignment) {
   const std::size_t eq = assignment.find('=');
+  if (eq == std::string::npos) throw UsageError("--width " + assignment + ": expected NAME=VALUE");
   const std::string name = assignment.substr(0, eq);
-  std::string names;
-  for (const WidthField& field : kWidthFields) {
-    if (name == field.name) {
-      if (eq == std::string::npos) throw UsageError("--width " + assignment + ": expected NAME=VALUE");
-      widths.*field.member = parse_int("--width " + name, assignment.substr(eq + 1));
-      return;
-    }
-    names += names.empty() ? field.name : std::string(", ") + field.name;
+  const int value = parse_int("--width " + name, assignment.substr(eq + 1));
+  try {
+    specular::set_width(widths, name, value);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--width: ") + e.what());
   }
-  throw UsageError("--width: '" + name + "' is not one of: " + names);
 }
 
 struct Options {

@@ -3,8 +3,15 @@
 # replays them. Stimulus: groups of operations with n, R, G, B unchanged (back-to-back
 # starts at 2 T), edge cases of cos and n, then random operations (a reload, 3 T, each).
 # CORRUPT=ON: one expected value is changed first, and the testbench must stop with a
-# MISMATCH on that vector (the testbench can fail).
+# MISMATCH on that vector (the testbench can fail). EXPECT_MISMATCH=ON: the first
+# vector must already mismatch (vectors of one width set, testbench of another).
+# WIDTHS: specular_tb's --width options of the width set, PARAMS: the device's
+# parameters of the same set (NAME=VALUE), both '|'-separated and empty for the
+# default set; ROM_DIR holds that set's images.
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
+string(REPLACE "|" ";" WIDTHS "${WIDTHS}")
+string(REPLACE "|" ";" PARAMS "${PARAMS}")
+list(TRANSFORM PARAMS PREPEND -Pspecular_device_tb.)
 file(REMOVE_RECURSE ${SCRATCH})
 file(MAKE_DIRECTORY ${SCRATCH})
 
@@ -26,7 +33,8 @@ file(WRITE ${SCRATCH}/stimulus.csv "${stimulus}")
 # A different random draw per combination.
 string(LENGTH "${SATURATION}" seed)
 math(EXPR seed "${seed} * 16 + ${CONSTANTS_VALUE} * 4 + ${NORMALISATION_VALUE}")
-set(policy_options --constants ${CONSTANTS} --policy ${NORMALISATION} --saturation ${SATURATION})
+set(policy_options --constants ${CONSTANTS} --policy ${NORMALISATION} --saturation ${SATURATION}
+                   ${WIDTHS})
 execute_process(COMMAND ${SPECULAR_TB} ${policy_options}
                         --input ${SCRATCH}/stimulus.csv --format csv --output ${SCRATCH}/groups.csv
                 RESULT_VARIABLE status ERROR_VARIABLE summary)
@@ -82,7 +90,7 @@ execute_process(
           -Pspecular_device_tb.LITERAL=${literal}
           -Pspecular_device_tb.CONSTANTS=${CONSTANTS_VALUE}
           -Pspecular_device_tb.NORMALISATION=${NORMALISATION_VALUE}
-          ${SOURCES} ${TESTBENCH}
+          ${PARAMS} ${SOURCES} ${TESTBENCH}
   RESULT_VARIABLE status OUTPUT_VARIABLE compile_log ERROR_VARIABLE compile_log)
 # Any iverilog warning fails the test (the device's files carry no `timescale: the
 # one warning that would bring is switched off, docs/rtl.md).
@@ -92,7 +100,12 @@ endif()
 execute_process(COMMAND ${VVP} -n ${SCRATCH}/device_tb.vvp RESULT_VARIABLE status
                 OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")
-if(CORRUPT)
+if(EXPECT_MISMATCH)
+  if(status EQUAL 0 OR NOT out MATCHES "MISMATCH vector 0 ")
+    message(FATAL_ERROR "the testbench should have stopped on vector 0 (status ${status})")
+  endif()
+  message(STATUS "the testbench stopped on vector 0, as it must (status ${status})")
+elseif(CORRUPT)
   if(status EQUAL 0 OR NOT out MATCHES "MISMATCH vector ${corrupt_vector} [^\n]*pin 26")
     message(FATAL_ERROR "the corrupted expected value of vector ${corrupt_vector} was not caught "
             "(status ${status})")

@@ -16,6 +16,11 @@
 // Stops with $fatal (non-zero exit) on the first mismatch. The policy reaches the
 // device as the twin's wrapper ties it: pins 19, 20 (CONSTANTS) and the configuration
 // inputs cfg_rom38_bank (4 * CONSTANTS + NORMALISATION) and cfg_literal (LITERAL).
+// Widths: the device's own width parameters, under the same names, passed to it
+// whole; a width set other than the default is given on the command line
+// (-Pspecular_device_tb.REG9_FRAC=16 ..., rtl/CMakeLists.txt's RTL_PARAMS_<set>), and
+// every width below follows. At time 0 the widths derived here are checked against the
+// device's own (hierarchical references), so the two derivations cannot drift.
 `default_nettype none
 `timescale 1ns / 1ps
 
@@ -30,19 +35,31 @@ module specular_device_tb;
   parameter RESET_EVERY = 17;
   parameter MAX_VECTORS = 8192;
 
-  // Default widths (docs/design.md), as specular_tb uses them.
-  localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 8;
-  localparam REG9_W = 37, REG9_FRAC = 22, OUT_W = 32, ROM38_W = 25, NORM_W = 31;
-  localparam BANK_BITS = 4;     // bank = 4 * constants + normalisation (modules/include/specular/rom38_banks.h)
+  // The device's width parameters (rtl/specular_device.v; defaults: docs/design.md's
+  // formats, as specular_tb uses them without --width).
+  parameter COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8;
+  parameter ROM5_ADDR_BITS = 15, ROM5_WORD_BITS = 22;
+  parameter REG9_INT = 14, REG9_FRAC = 22;
+  parameter MUX4_FRAC = 8;
+  parameter ROM38_INT = 9, ROM38_FRAC = 16, ROM38_BANK_BITS = 4;  // bank = 4 * constants + normalisation
+  parameter NORM_INT = 10, NORM_FRAC = 20;
+  parameter OUT_INT = 18, OUT_FRAC = 13;
+  // Bus widths, derived as the device derives them (checked against it at time 0).
+  localparam COS_W = 1 + COS_FRAC;
+  localparam MUX4_W = N_BITS + MUX4_FRAC;
+  localparam REG9_W = 1 + REG9_INT + REG9_FRAC;
+  localparam ROM38_W = ROM38_INT + ROM38_FRAC;
+  localparam NORM_W = 1 + NORM_INT + NORM_FRAC;
+  localparam OUT_W = 1 + OUT_INT + OUT_FRAC;
 
   // ---- device ----
-  reg  [COS_FRAC:0]           pin17_cos = 0;
+  reg  [COS_W-1:0]            pin17_cos = 0;
   reg  [N_BITS-1:0]           pin18_n = 0;
   // Pins 19 (h) and 20 (a): wired constants of the constants policy, as the harness
   // ties them (codes written by specular_romgen from constants.cpp).
   reg  [63:0]                 pin_codes [0:5];
   initial $readmemh(PINS_IMAGE, pin_codes);
-  wire [N_BITS+MUX4_FRAC-1:0] pin19_h = pin_codes[2 * CONSTANTS][N_BITS+MUX4_FRAC-1:0];
+  wire [MUX4_W-1:0]           pin19_h = pin_codes[2 * CONSTANTS][MUX4_W-1:0];
   wire [REG9_W-1:0]           pin20_a = pin_codes[2 * CONSTANTS + 1][REG9_W-1:0];
   reg  [RGB_BITS-1:0]         pin21_r = 0, pin22_g = 0, pin23_b = 0;
   wire [OUT_W-1:0]            pin24_r, pin25_g, pin26_b;
@@ -51,14 +68,20 @@ module specular_device_tb;
   wire pin34_carry = 1'b1;
   wire pin35_done;
   wire obs_select36, obs_write37, obs_q41, obs_q42, obs_nand45;
-  wire [COS_FRAC:0]  obs_reg1_q;
+  wire [COS_W-1:0]   obs_reg1_q;
   wire [REG9_W-1:0]  obs_reg9_q;
   wire [ROM38_W-1:0] obs_rom38_k;
   wire [NORM_W-1:0]  obs_mul39_norm;
   wire               cfg_literal = LITERAL;
-  wire [BANK_BITS-1:0] cfg_rom38_bank = 4 * CONSTANTS + NORMALISATION;
+  wire [ROM38_BANK_BITS-1:0] cfg_rom38_bank = 4 * CONSTANTS + NORMALISATION;
 
-  specular_device #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
+  specular_device #(
+    .COS_FRAC(COS_FRAC), .N_BITS(N_BITS), .RGB_BITS(RGB_BITS),
+    .ROM5_ADDR_BITS(ROM5_ADDR_BITS), .ROM5_WORD_BITS(ROM5_WORD_BITS),
+    .REG9_INT(REG9_INT), .REG9_FRAC(REG9_FRAC), .MUX4_FRAC(MUX4_FRAC),
+    .ROM38_INT(ROM38_INT), .ROM38_FRAC(ROM38_FRAC), .ROM38_BANK_BITS(ROM38_BANK_BITS),
+    .NORM_INT(NORM_INT), .NORM_FRAC(NORM_FRAC), .OUT_INT(OUT_INT), .OUT_FRAC(OUT_FRAC),
+    .ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
     .pin17_cos(pin17_cos), .pin18_n(pin18_n), .pin19_h(pin19_h), .pin20_a(pin20_a),
     .pin21_r(pin21_r), .pin22_g(pin22_g), .pin23_b(pin23_b),
     .pin24_r(pin24_r), .pin25_g(pin25_g), .pin26_b(pin26_b),
@@ -77,7 +100,7 @@ module specular_device_tb;
   real              v_cos [0:MAX_VECTORS-1];
   integer           v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1],
                     v_b [0:MAX_VECTORS-1];
-  reg [COS_FRAC:0]  v_reg1 [0:MAX_VECTORS-1];
+  reg [COS_W-1:0]   v_reg1 [0:MAX_VECTORS-1];
   reg [REG9_W-1:0]  v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
   reg [OUT_W-1:0]   v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
                     v_out26 [0:MAX_VECTORS-1];
@@ -103,7 +126,7 @@ module specular_device_tb;
           if (count == MAX_VECTORS) $fatal(1, "specular_device_tb: more than %0d vectors", MAX_VECTORS);
           v_cos[count] = cos;
           v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
-          v_reg1[count] = h1[COS_FRAC:0];
+          v_reg1[count] = h1[COS_W-1:0];
           v_pass1[count] = h2[REG9_W-1:0];
           v_pass2[count] = h3[REG9_W-1:0];
           v_out24[count] = h4[OUT_W-1:0];
@@ -183,7 +206,7 @@ module specular_device_tb;
 
   // Start an operation at `at` (a rising clock edge), data a quarter period before;
   // returns with start high, at the start edge (the caller lowers it T/2 later).
-  task raise_start(input real at, input [COS_FRAC:0] cos_code, input integer index);
+  task raise_start(input real at, input [COS_W-1:0] cos_code, input integer index);
     reg reload;
     begin
       reload = !loaded || v_n[index] != loaded_n || v_r[index] != loaded_r ||
@@ -234,7 +257,17 @@ module specular_device_tb;
     end
   endtask
 
+  // The widths derived above are the device's.
+  task check_widths;
+    if (COS_W != dut.COS_W || MUX4_W != dut.MUX4_W || REG9_W != dut.REG9_W ||
+        ROM38_W != dut.ROM38_W || NORM_W != dut.NORM_W || OUT_W != dut.OUT_W)
+      $fatal(1, "specular_device_tb: widths derived differently from the device's: COS %0d/%0d MUX4 %0d/%0d REG9 %0d/%0d ROM38 %0d/%0d NORM %0d/%0d OUT %0d/%0d",
+             COS_W, dut.COS_W, MUX4_W, dut.MUX4_W, REG9_W, dut.REG9_W, ROM38_W, dut.ROM38_W,
+             NORM_W, dut.NORM_W, OUT_W, dut.OUT_W);
+  endtask
+
   initial begin
+    check_widths;
     read_vectors;
     loaded = 0;
     // Reset first: the device is defined from reset on (no initial values).
@@ -268,8 +301,9 @@ module specular_device_tb;
     if (done_seen != count || pass1_seen != count || fall_seen != count)
       $fatal(1, "specular_device_tb: %0d operations, %0d pass-1 writes, %0d results",
              count, pass1_seen, done_seen);
-    $display("specular_device_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s",
-             count, back_to_back, resets, checks, VECTORS);
+    $display("specular_device_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s; widths COS U1.%0d, register 9 S%0d.%0d, ROM 5 word %0d bits",
+             count, back_to_back, resets, checks, VECTORS, COS_FRAC, REG9_INT, REG9_FRAC,
+             ROM5_WORD_BITS);
     $finish;
   end
 

@@ -87,6 +87,14 @@ struct Widths {
   void validate() const;
 };
 
+/// Sets the width `name` (a member's name above: "cos_frac_bits", "rom5_word_bits", …)
+/// to `value`, as the tools' `--width NAME=VALUE` options do; throws
+/// std::invalid_argument naming every known name when `name` is none of them. The
+/// range is validate()'s concern, once every width is set.
+void set_width(Widths& widths, const std::string& name, int value);
+/// The names set_width accepts, comma-separated.
+std::string width_names();
+
 /// Bus formats derived from Widths; computed once, read everywhere.
 struct Formats {
   explicit Formats(const Widths& widths = Widths{});

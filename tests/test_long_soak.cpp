@@ -13,46 +13,15 @@
 #include <string>
 #include <vector>
 
-#include "support/scratch.h"
+#include "support/soak_run.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string soak = std::string(SPECULAR_BINARY_DIR) + "/testbench/soak/specular_soak";
-
-struct SoakRun {
-  int status = -1;
-  std::string out;
-  /// stage → key → value, from the "soak <stage>: key=value ..." lines.
-  std::map<std::string, std::map<std::string, double>> stages;
-};
-
-SoakRun run_soak(const std::string& arguments) {
-  const fs::path out = specular::testing_support::scratch_file("soak_out.txt");
-  const int raw = std::system(("'" + soak + "' " + arguments + " >'" + out.string() + "'").c_str());
-  SoakRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(out);
-  std::stringstream all;
-  all << in.rdbuf();
-  r.out = all.str();
-  std::istringstream lines(r.out);
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.rfind("soak ", 0) != 0) continue;
-    const auto colon = line.find(':');
-    const std::string stage = line.substr(5, colon - 5);
-    std::istringstream fields(line.substr(colon + 1));
-    std::string field;
-    while (fields >> field) {
-      const auto equals = field.find('=');
-      if (equals != std::string::npos)
-        r.stages[stage][field.substr(0, equals)] = std::stod(field.substr(equals + 1));
-    }
-  }
-  return r;
-}
+using specular::testing_support::run_soak;
+using specular::testing_support::soak;
+using specular::testing_support::SoakRun;
 
 const std::map<std::string, double> planned = {
     {"core", 1000000}, {"pin", 200000}, {"tlm", 200000}, {"tlm-pin", 20000}};

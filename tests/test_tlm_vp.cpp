@@ -85,20 +85,25 @@ Image render_directly(int size, const Config& config) {
 
 fs::path scratch(const std::string& name) { return specular::testing_support::scratch_subdir(name); }
 
-void expect_same_as_direct(const std::string& arguments, int size, const Config& config,
-                           const std::string& name) {
+/// Runs specular_vp with `arguments`; its image must equal the direct rendering under
+/// `config`. Returns the image.
+Image expect_same_as_direct(const std::string& arguments, int size, const Config& config,
+                            const std::string& name) {
   const fs::path dir = scratch(name);
   const fs::path ppm = dir / "image.ppm";
-  ASSERT_EQ(run_vp("--out '" + ppm.string() + "' " + arguments, dir / "log.txt"), 0)
-      << std::ifstream(dir / "log.txt").rdbuf();
+  const int status = run_vp("--out '" + ppm.string() + "' " + arguments, dir / "log.txt");
+  EXPECT_EQ(status, 0) << std::ifstream(dir / "log.txt").rdbuf();
+  if (status != 0) return {};
   const Image got = read_ppm(ppm);
-  ASSERT_EQ(got.width, 4 * size);
-  ASSERT_EQ(got.height, size);
+  EXPECT_EQ(got.width, 4 * size);
+  EXPECT_EQ(got.height, size);
+  if (got.width != 4 * size || got.height != size) return got;
   const Image expected = render_directly(size, config);
   std::size_t differences = 0;
   for (std::size_t i = 0; i < got.rgb.size(); ++i) differences += got.rgb[i] != expected.rgb[i];
   EXPECT_EQ(differences, 0u) << "bytes that differ from the direct rendering";
   EXPECT_FALSE(fs::exists(dir / "image.ppm.tmp"));
+  return got;
 }
 
 TEST(TlmVirtualPlatform, ImageEqualsTheCoreRenderingByteForByte) {
@@ -111,6 +116,34 @@ TEST(TlmVirtualPlatform, PatentPolicyAtAnotherSizeToo) {
   Config config;
   config.normalisation = Normalisation::patent;
   expect_same_as_direct("--size 80 --policy patent", 80, config, "patent");
+}
+
+// --constants reaches the IP: under each constants policy the image equals Core's
+// rendering under that policy, byte for byte, and differs from the patent constants'.
+TEST(TlmVirtualPlatform, ConstantsPolicyReachesTheIp) {
+  for (const Constants constants : {Constants::minimax_half, Constants::minimax}) {
+    SCOPED_TRACE(to_string(constants));
+    Config config;
+    config.normalisation = Normalisation::patent;
+    config.constants = constants;
+    const Image got = expect_same_as_direct(
+        std::string("--size 40 --policy patent --constants ") + to_string(constants), 40, config,
+        std::string("constants_") + to_string(constants));
+    Config patent_constants = config;
+    patent_constants.constants = Constants::patent;
+    const Image patent_image = render_directly(40, patent_constants);
+    ASSERT_EQ(got.rgb.size(), patent_image.rgb.size());
+    std::size_t differences = 0;
+    for (std::size_t i = 0; i < got.rgb.size(); ++i) differences += got.rgb[i] != patent_image.rgb[i];
+    EXPECT_GT(differences, 100u) << "the constants should change the highlights";
+  }
+  const fs::path dir = scratch("constants_bad");
+  EXPECT_EQ(run_vp("--out x.ppm --constants schlick", dir / "log.txt"), 2);
+  std::stringstream log;
+  log << std::ifstream(dir / "log.txt").rdbuf();
+  EXPECT_NE(log.str().find("'schlick' is not one of: patent, minimax-half, minimax"),
+            std::string::npos)
+      << log.str();
 }
 
 // Independent of scene.h: the sphere, the half-way vector and the formula written
@@ -157,7 +190,8 @@ TEST(TlmVirtualPlatform, BadArgumentsAreRefused) {
   for (const std::string& arguments :
        {std::string(""), std::string("--out x.ppm --size 8"), std::string("--out x.ppm --size 2000"),
         std::string("--out x.ppm --size 12a"), std::string("--out x.ppm --policy fancy"),
-        std::string("--out x.ppm --colour 3"), std::string("--out")}) {
+        std::string("--out x.ppm --colour 3"), std::string("--out"),
+        std::string("--out x.ppm --constants schlick"), std::string("--out x.ppm --constants")}) {
     SCOPED_TRACE(arguments);
     EXPECT_EQ(run_vp(arguments, dir / "log.txt"), 2);
     std::stringstream log;

@@ -3,10 +3,12 @@
 // bus, and the frame buffer is written as a binary PPM (P6).
 //
 //   specular_vp --out FILE.ppm [--size N] [--policy patent|energy|none]
+//               [--constants patent|minimax-half|minimax]
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "platform.h"
@@ -20,16 +22,20 @@ constexpr int exit_usage = 2;
 
 const char* usage =
     "usage: specular_vp --out FILE.ppm [--size N] [--policy patent|energy|none]\n"
+    "                   [--constants patent|minimax-half|minimax]\n"
     "  --out FILE      the image: 4 panels of N x N pixels side by side, binary PPM (P6)\n"
     "  --size N        panel size in pixels, 16..1024 (default 256)\n"
     "  --policy P      the IP's ROM 38 contents (default none: K = 1, so every panel's\n"
     "                  highlight peaks at the light's intensity; patent: 2pi/(n+2),\n"
-    "                  whose n = 1000 highlight is nearly black; energy: (n+2)/(2pi))\n";
+    "                  whose n = 1000 highlight is nearly black; energy: (n+2)/(2pi))\n"
+    "  --constants C   the IP's pins 19 (h), 20 (a) and ROM 38's scale s (default\n"
+    "                  patent: 1/2, 1, 1; minimax-half, minimax: docs/study.md)\n";
 
 struct Arguments {
   std::string out;
   int size = 256;
   Normalisation policy = Normalisation::none;
+  Constants constants = Constants::patent;
 };
 
 [[noreturn]] void usage_error(const std::string& message) {
@@ -45,7 +51,7 @@ Arguments parse(int argc, char** argv) {
       std::cout << usage;
       std::exit(0);
     }
-    if (option != "--out" && option != "--size" && option != "--policy")
+    if (option != "--out" && option != "--size" && option != "--policy" && option != "--constants")
       usage_error("unknown option '" + option + "'");
     if (i + 1 >= argc) usage_error(option + " needs a value");
     const std::string value = argv[++i];
@@ -57,6 +63,12 @@ Arguments parse(int argc, char** argv) {
       if (value.empty() || *end != '\0' || size < 16 || size > 1024)
         usage_error("--size = '" + value + "' is not an integer in [16, 1024]");
       a.size = static_cast<int>(size);
+    } else if (option == "--constants") {
+      try {
+        a.constants = parse_constants(value);
+      } catch (const std::invalid_argument& e) {
+        usage_error(std::string("--constants: ") + e.what());
+      }
     } else if (value == "patent") {
       a.policy = Normalisation::patent;
     } else if (value == "energy") {
@@ -96,6 +108,7 @@ int sc_main(int argc, char** argv) {
   frame.size = args.size;
   Config config;
   config.normalisation = args.policy;
+  config.constants = args.constants;
 
   Cpu cpu("cpu", frame);
   Router bus("bus", {{memory_base, frame.memory_bytes(), "to_memory"},

@@ -21,6 +21,9 @@ struct SoakOptions {
   std::size_t tlm_ops = 1000000;    ///< through the TLM `lt` target (SpecularDriver)
   std::size_t tlm_pin_ops = 100000;  ///< through the TLM `pin` target (transactor)
   std::uint64_t seed = 1;
+  /// The device's constants (pins 19, 20, ROM 38's scale) in every stage; the
+  /// reference and the core follow it.
+  Constants constants = Constants::patent;
   /// Corrupts the result of operation K (1-based) of every stage, to show that the
   /// scoreboard catches it (0: none).
   std::size_t inject_fault = 0;
@@ -61,6 +64,9 @@ struct StageFigures {
   double seconds = 0;
   long rss_early_kib = 0;  ///< VmRSS after about a tenth of the stage's operations
   long rss_late_kib = 0;   ///< VmRSS at the end of the stage
+  /// TLM stages: the target's CONFIG register (its policies, constants in bits 6:5),
+  /// read over the bus; −1 for the other stages.
+  long long config_register = -1;
 };
 
 /// Resident memory now (VmRSS of /proc/self/status), in KiB; −1 if unavailable.
@@ -69,7 +75,12 @@ long resident_kib();
 /// "soak <stage>: ops=… mismatches=… …" — one line, key=value, for scripts and tests.
 std::string format_figures(const StageFigures& figures);
 
-StageFigures run_core_stage(const SoakOptions& options);
+/// The configuration of the pin and TLM stages: the defaults with options.constants.
+Config soak_config(const SoakOptions& options);
+
+/// Cycles through every normalisation x saturation the device accepts under
+/// options.constants (soak_config); `skipped` gets the refused ones.
+StageFigures run_core_stage(const SoakOptions& options, std::vector<std::string>* skipped = nullptr);
 /// These elaborate a SystemC design: call each once per process (specular_soak runs
 /// each in a child process of its own).
 StageFigures run_pin_stage(const SoakOptions& options);

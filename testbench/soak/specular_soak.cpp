@@ -62,10 +62,14 @@ int sc_main(int argc, char** argv) {
   }
   std::cout << "specular_soak: seed " << options.seed << "; core " << options.core_ops << ", pin "
             << options.pin_ops << ", tlm " << options.tlm_ops << ", tlm-pin " << options.tlm_pin_ops
-            << " operations" << std::endl;
+            << " operations; constants " << specular::to_string(options.constants) << std::endl;
   bool pass = true;
   if (options.core_ops > 0) {
-    const StageFigures core = specular::soak::run_core_stage(options);
+    std::vector<std::string> skipped;
+    const StageFigures core = specular::soak::run_core_stage(options, &skipped);
+    for (const std::string& policy : skipped)
+      std::cout << "specular_soak: core: " << policy << " skipped (the device refuses it under constants "
+                << specular::to_string(options.constants) << ")" << std::endl;
     std::cout << specular::soak::format_figures(core) << std::endl;
     pass = pass && core.mismatches == 0;
   }

@@ -1,6 +1,8 @@
 #include "specular/tlm/register_map.h"
 
+#include <algorithm>
 #include <sstream>
+#include <vector>
 
 namespace specular {
 
@@ -105,7 +107,8 @@ std::string row_offsets(const RegisterInfo& row) {
 /// The reset cell: one value, or the words of an alias window that differ from it.
 std::string reset_cell(const RegisterInfo& row) {
   std::string cell = hex(row.reset, 8);
-  for (std::uint32_t w = 0; w < row.words && w < operand_words; ++w) {
+  if (row.reg != Reg::operands && row.reg != Reg::results) return cell;
+  for (std::uint32_t w = 0; w < row.words; ++w) {
     const std::uint32_t value = reset_of_word(row, w);
     if (value == row.reset) continue;
     const Reg alias = row.reg == Reg::operands ? operand_register(w) : result_register(w);
@@ -130,14 +133,13 @@ std::string write_refusals(const RegisterInfo& row) {
   }
   std::string causes;
   if (row.reg == Reg::operands) {  // word by word, as the registers behind it
-    causes = "each word as its register: ";
-    std::string seen;
+    std::vector<ErrorCause> seen;
     for (std::uint32_t w = 0; w < operand_words; ++w) {
       const ErrorCause cause = info(operand_register(w)).value_check;
-      if (cause == ErrorCause::none || seen.find(to_string(cause)) != std::string::npos) continue;
-      if (!seen.empty()) causes += ", ";
-      causes += cause_cell(cause);
-      seen += std::string(to_string(cause)) + " ";
+      if (cause == ErrorCause::none || std::find(seen.begin(), seen.end(), cause) != seen.end())
+        continue;
+      causes += (seen.empty() ? "each word as its register: " : ", ") + cause_cell(cause);
+      seen.push_back(cause);
     }
     causes += "; ";
   } else if (row.value_check != ErrorCause::none) {

@@ -5,7 +5,7 @@ namespace specular {
 SpecularPinTarget::SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
                                      const sc_core::sc_time& clock_period, bool real_views)
     : SpecularTarget(name, config, clock_period),
-      harness("harness", config, clock_period, real_views) {
+      harness("harness", config, clock_period, real_views, ClockMode::on_demand) {
   SPECULAR_HAS_PROCESS(SpecularPinTarget);
   SC_METHOD(on_reset);
   sensitive << harness.pin29_reset_n.negedge_event();
@@ -49,8 +49,10 @@ void SpecularPinTarget::transact() {
   for (;;) {
     while (!job_posted_) sc_core::wait(job_event_);
     job_posted_ = false;
+    harness.clock_on();  // pin 28 runs only while there is work: an idle target costs nothing
     if (!reset_seen_) harness.reset();  // no start before a reset (spec §3)
     harness.run_batch(operands_, results_);
+    harness.clock_off();
     job_done_ = true;
     done_event_.notify(sc_core::SC_ZERO_TIME);
   }

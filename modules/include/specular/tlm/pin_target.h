@@ -16,7 +16,10 @@ namespace specular {
 /// rising clock edge at least a quarter period away (the harness's protocol); a batch
 /// streams one operation every 2 periods. If pin 29 was never pulsed since power-on,
 /// the first operation first resets the control unit (one clock period), as spec §3
-/// wants before any start.
+/// wants before any start. Pin 28 runs on demand (ClockMode::on_demand): from the
+/// operation's first edge to a few periods after pin 35 rises, on the grid of a clock
+/// that had run from time 0, so an idle target schedules nothing and sc_start()
+/// without a time end returns once the initiators are done.
 ///
 /// The transactor owns the pins: one SC_THREAD of its own (`transact`) writes them,
 /// whoever calls (SystemC's one-writer rule). Writes are served one at a time in the

@@ -29,7 +29,7 @@ fi
 
 build=${SPECULAR_FUZZ_BUILD_DIR:-build-fuzz}
 jobs=$(nproc 2>/dev/null || echo 2)
-targets=(fuzz_csv_options fuzz_tlm_registers)
+targets=(fuzz_csv_options fuzz_tlm_registers fuzz_tlm_sequences)
 configure=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DSPECULAR_FUZZ=ON -DSPECULAR_BUILD_TESTS=OFF
            -DSPECULAR_BUILD_BENCH=OFF)
 # The compiler is set on the first configure only: changing it later empties the cache.

@@ -184,13 +184,15 @@ INSTANTIATE_TEST_SUITE_P(BothImplementations, OperandBurst, ::testing::Values(Ki
                            return std::string(to_string(info.param));
                          });
 
-// While the pin model computes, a burst into OPERANDS is refused as busy, word 0
-// named, and changes nothing: the operation in flight finishes on its own operands.
-TEST(OperandBurstBusy, PinTargetRefusesABurstWhileAnOperationRuns) {
-  tlm::tlm_response_status refused = tlm::TLM_INCOMPLETE_RESPONSE;
-  std::uint32_t busy_status = 0, cause = 0, error_address = 0;
-  std::array<std::uint32_t, 5> after{};
-  std::int32_t out[3] = {0, 0, 0};
+// While the pin model computes, a second master's burst into OPERANDS (with START)
+// waits its turn instead of being refused (issue 20): the operation in flight finishes
+// on its own operands, then the queued burst runs as the next operation. Reads never
+// wait: the second master sees STATUS.busy meanwhile.
+TEST(OperandBurstBusy, PinTargetQueuesABurstWhileAnOperationRuns) {
+  tlm::tlm_response_status queued = tlm::TLM_INCOMPLETE_RESPONSE;
+  std::uint32_t busy_status = 0, status_after = 0;
+  sc_time queued_returned;
+  std::int32_t out[3] = {0, 0, 0}, other_out[3] = {0, 0, 0};
   run(
       {Kind::pin},
       [&](TlmBench& b) {
@@ -198,7 +200,6 @@ TEST(OperandBurstBusy, PinTargetRefusesABurstWhileAnOperationRuns) {
         b.until(sc_time(40, SC_NS));
         std::uint32_t words[6] = {65536, 2, 100, 0, 0, start};  // cos 1, n 2: K·A·R = 2π/4·100
         ASSERT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, operands_at, words, 24), tlm::TLM_OK_RESPONSE);
-        after = single_registers(e);
         ASSERT_EQ(e.transport(tlm::TLM_READ_COMMAND, results_at, out, 12), tlm::TLM_OK_RESPONSE);
       },
       Config{}, sc_time(10, SC_NS),
@@ -206,19 +207,25 @@ TEST(OperandBurstBusy, PinTargetRefusesABurstWhileAnOperationRuns) {
         Endpoint& e = b.at(0);
         b.until(sc_time(55, SC_NS));  // busy from 40 ns: reset 40–50, start at 60, done 85
         busy_status = e.read(Reg::status);
-        std::uint32_t other[6] = {0, 3, 1, 1, 1, start};
-        refused = e.transport(tlm::TLM_WRITE_COMMAND, operands_at, other, 24);
-        cause = e.cause();
-        error_address = e.read(Reg::error_address);
+        std::uint32_t other[6] = {65536, 2, 0, 100, 0, start};  // the same on G only
+        queued = e.transport(tlm::TLM_WRITE_COMMAND, operands_at, other, 24);
+        queued_returned = sc_core::sc_time_stamp();
+        ASSERT_EQ(e.transport(tlm::TLM_READ_COMMAND, results_at, other_out, 12), tlm::TLM_OK_RESPONSE);
+        status_after = e.read(Reg::status);
       });
   EXPECT_TRUE(busy_status & status_bits::busy);
-  EXPECT_EQ(refused, tlm::TLM_GENERIC_ERROR_RESPONSE);
-  EXPECT_EQ(cause, cause_of(ErrorCause::busy));
-  EXPECT_EQ(error_address, operands_at);
-  EXPECT_EQ(after, (std::array<std::uint32_t, 5>{65536, 2, 100, 0, 0}));
-  EXPECT_NEAR(out[0] / 8192.0, 2 * M_PI / 4 * 100, std::ldexp(1.0, -10) * 1.571 * 100 + 1.0 / 8192);
+  EXPECT_EQ(queued, tlm::TLM_OK_RESPONSE);
+  EXPECT_FALSE(status_after & status_bits::error);
+  // The first operation ends at 85 ns; the queued one starts at the next rising edge at
+  // least a quarter period later (90 ns) and ends 2.5 periods after it.
+  EXPECT_EQ(queued_returned, sc_time(115, SC_NS));
+  const double tolerance = std::ldexp(1.0, -10) * 1.571 * 100 + 1.0 / 8192;
+  EXPECT_NEAR(out[0] / 8192.0, 2 * M_PI / 4 * 100, tolerance);
   EXPECT_EQ(out[1], 0);
   EXPECT_EQ(out[2], 0);
+  EXPECT_EQ(other_out[0], 0);
+  EXPECT_NEAR(other_out[1] / 8192.0, 2 * M_PI / 4 * 100, tolerance);
+  EXPECT_EQ(other_out[2], 0);
 }
 
 // A START inside the burst costs what START costs: 2.5 periods annotated on `lt`.

@@ -264,11 +264,13 @@ TEST(TlmRegisters, DebugTransportReadsAndWrites) {
 }
 
 // The pin transactor holds its operands while an operation runs: a second master's
-// operand writes and START are refused with cause busy, the running result is intact.
-TEST(TlmRegisters, PinTargetRefusesOperandWritesWhileBusy) {
-  std::uint32_t busy_status = 0;
-  std::vector<tlm::tlm_response_status> refused;
-  std::uint32_t n_after = 0, out_r = 0;
+// operand writes and START wait their turn (issue 20) instead of being refused, so the
+// running result is intact and the queued writes then land in arrival order.
+TEST(TlmRegisters, PinTargetQueuesOperandWritesWhileBusy) {
+  std::uint32_t busy_status = 0, status_after = 0;
+  std::vector<tlm::tlm_response_status> queued;
+  std::vector<sc_time> returned;
+  std::uint32_t out_r = 0, n_final = 0, cos_final = 0;
   run(
       {Kind::pin},
       [&](TlmBench& b) {
@@ -278,23 +280,29 @@ TEST(TlmRegisters, PinTargetRefusesOperandWritesWhileBusy) {
         ASSERT_EQ(e.write(Reg::r, 100), tlm::TLM_OK_RESPONSE);
         b.until(sc_time(40, SC_NS));
         ASSERT_EQ(e.write(Reg::control, control_bits::start), tlm::TLM_OK_RESPONSE);
-        out_r = e.read(Reg::out_r);
-        n_after = e.read(Reg::n);
+        out_r = e.read(Reg::out_r);  // reads never wait: served before the queued writes
       },
       Config{}, sc_time(10, SC_NS),
       [&](TlmBench& b) {
         Endpoint& e = b.at(0);
         b.until(sc_time(55, SC_NS));  // busy from 40 ns: reset 40–50, start at 60, done 85
         busy_status = e.read(Reg::status);
-        refused.push_back(e.write(Reg::n, 3));
-        refused.push_back(e.write(Reg::cos, 0));
-        refused.push_back(e.write(Reg::control, control_bits::start));
-        EXPECT_EQ(e.cause(), cause_of(ErrorCause::busy));
+        queued.push_back(e.write(Reg::n, 3));
+        returned.push_back(sc_core::sc_time_stamp());
+        queued.push_back(e.write(Reg::cos, 0));
+        returned.push_back(sc_core::sc_time_stamp());
+        status_after = e.read(Reg::status);
+        n_final = e.read(Reg::n);
+        cos_final = e.read(Reg::cos);
       });
   EXPECT_TRUE(busy_status & status_bits::busy);
-  ASSERT_EQ(refused.size(), 3u);
-  for (const auto r : refused) EXPECT_EQ(r, tlm::TLM_GENERIC_ERROR_RESPONSE);
-  EXPECT_EQ(n_after, 2u);
+  ASSERT_EQ(queued.size(), 2u);
+  for (const auto r : queued) EXPECT_EQ(r, tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(returned[0], sc_time(85, SC_NS)) << "N waits until pin 35 rises";
+  EXPECT_EQ(returned[1], sc_time(85, SC_NS)) << "COS is served at once after it";
+  EXPECT_FALSE(status_after & status_bits::error);
+  EXPECT_EQ(n_final, 3u);
+  EXPECT_EQ(cos_final, 0u);
   // K·A·R = (2π/4)·1·100 = 157.08 in S18.13, within one output LSB plus 2^-10·K·R.
   EXPECT_NEAR(static_cast<std::int32_t>(out_r) / 8192.0, 2 * M_PI / 4 * 100,
               std::ldexp(1.0, -10) * 1.571 * 100 + 1.0 / 8192);

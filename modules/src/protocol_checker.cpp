@@ -161,7 +161,11 @@ void ProtocolChecker::on_clock() {
   }
   const sc_time now = sc_time_stamp();
   if (clk.read()) {
-    if (rise_seen_ && now > last_rise_) period_ = now - last_rise_;
+    // The shortest interval between rises: a clock that pauses between operations (the
+    // TLM transactor's on-demand pin 28) keeps its period across the pause.
+    if (rise_seen_ && now > last_rise_ &&
+        (period_ == sc_core::SC_ZERO_TIME || now - last_rise_ < period_))
+      period_ = now - last_rise_;
     last_rise_ = now;
     rise_seen_ = true;
     return;

@@ -11,6 +11,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,11 +32,32 @@ namespace specular {
 ///   - starts come every 2 T while n, R, G, B are unchanged (only cos λ streams),
 ///     every 3 T when they change (they may be reloaded only after 35 rises).
 /// The run functions block: call them from an SC_THREAD.
+///
+/// Pin 28 either runs freely from time 0 (an sc_clock: the testbench, the benches) or
+/// on demand (a TLM transactor, SpecularPinTarget): then it rises only between
+/// clock_on() and a few periods after clock_off(), on the same grid of rising edges
+/// (multiples of the period), so an idle device costs no process activations and
+/// sc_start() without a time end returns when nothing else is pending.
+enum class ClockMode : std::uint8_t { free_running, on_demand };
+
 template <class Device>
 class DeviceHarness : public sc_core::sc_module {
  public:
   DeviceHarness(sc_core::sc_module_name name, const Config& config,
-                const sc_core::sc_time& clock_period, bool real_views = false);
+                const sc_core::sc_time& clock_period, bool real_views = false,
+                ClockMode clock_mode = ClockMode::free_running);
+
+  /// On demand: let pin 28 run (from the next rising edge of the grid). Call before
+  /// reset() or a run; free-running: nothing to do.
+  void clock_on();
+  /// On demand: stop pin 28, low, after `idle_tail_rises` more rising edges (the
+  /// control unit settles back to idle). Free-running: nothing to do.
+  void clock_off();
+  /// Rising edges of an on-demand pin 28 so far (0 when free-running).
+  std::uint64_t clock_rises() const { return clock_rises_; }
+  static constexpr int idle_tail_rises = 3;
+  /// Pin 28, whichever the mode.
+  const sc_core::sc_signal_in_if<bool>& pin28() const { return *pin28_; }
 
   /// Pulse reset (pin 29) low for one clock period; the control unit returns to idle.
   void reset();
@@ -56,11 +79,20 @@ class DeviceHarness : public sc_core::sc_module {
   void on_select36();  // pass 1 is in register 9 while select 36 rises
   void on_done35();    // results are valid at the rising edge of 35
   void wait_until(const sc_core::sc_time& when);
+  void tick_clock();  // on demand: the next edge of pin 28
 
   sc_core::sc_time period_;
+  ClockMode clock_mode_;
+  std::unique_ptr<sc_core::sc_clock> free_clock_;  ///< pin 28, free-running
+  std::unique_ptr<wire> gated_clock_;              ///< pin 28, on demand
+  const sc_core::sc_signal_in_if<bool>* pin28_ = nullptr;
+  sc_core::sc_event clock_event_;
+  bool clock_wanted_ = false;
+  bool clock_running_ = false;
+  int tail_rises_ = 0;
+  std::uint64_t clock_rises_ = 0;
 
  public:
-  sc_core::sc_clock pin28_clk;
   bus_signal pin17_cos{"pin17_cos"};
   bus_signal pin18_n{"pin18_n"};
   bus_signal pin19_h{"pin19_h"};
@@ -98,12 +130,28 @@ class DeviceHarness : public sc_core::sc_module {
 
 template <class Device>
 DeviceHarness<Device>::DeviceHarness(sc_core::sc_module_name name, const Config& config,
-                                     const sc_core::sc_time& clock_period, bool real_views)
+                                     const sc_core::sc_time& clock_period, bool real_views,
+                                     ClockMode clock_mode)
     : sc_module(name),
       period_(clock_period),
-      pin28_clk("pin28_clk", clock_period, 0.5, sc_core::SC_ZERO_TIME, true),
+      clock_mode_(clock_mode),
+      free_clock_(clock_mode == ClockMode::free_running
+                      ? std::make_unique<sc_core::sc_clock>("pin28_clk", clock_period, 0.5,
+                                                            sc_core::SC_ZERO_TIME, true)
+                      : nullptr),
+      gated_clock_(clock_mode == ClockMode::on_demand ? std::make_unique<wire>("pin28_clk") : nullptr),
       dut("dut", config, real_views) {
   SPECULAR_HAS_PROCESS(DeviceHarness);
+  if (free_clock_) {
+    pin28_ = free_clock_.get();
+    dut.pin28_clk(*free_clock_);
+  } else {
+    pin28_ = gated_clock_.get();
+    dut.pin28_clk(*gated_clock_);
+    SC_METHOD(tick_clock);
+    sensitive << clock_event_;
+    dont_initialize();
+  }
   dut.pin17_cos(pin17_cos);
   dut.pin18_n(pin18_n);
   dut.pin19_h(pin19_h);
@@ -115,7 +163,6 @@ DeviceHarness<Device>::DeviceHarness(sc_core::sc_module_name name, const Config&
   dut.pin25_g(pin25_g);
   dut.pin26_b(pin26_b);
   dut.pin27_start(pin27_start);
-  dut.pin28_clk(pin28_clk);
   dut.pin29_reset_n(pin29_reset_n);
   dut.pin30_load_n(pin30_load_n);
   dut.pin31_load_r(pin31_load_r);
@@ -139,6 +186,40 @@ template <class Device>
 void DeviceHarness<Device>::wait_until(const sc_core::sc_time& when) {
   const sc_core::sc_time now = sc_core::sc_time_stamp();
   if (when > now) wait(when - now);
+}
+
+template <class Device>
+void DeviceHarness<Device>::clock_on() {
+  clock_wanted_ = true;
+  tail_rises_ = 0;
+  if (clock_mode_ != ClockMode::on_demand || clock_running_) return;
+  clock_running_ = true;
+  // Resume on the free-running clock's grid: the next rising edge at a multiple of T.
+  const sc_core::sc_time now = sc_core::sc_time_stamp();
+  clock_event_.notify(period_ * std::ceil(now / period_) - now);
+}
+
+template <class Device>
+void DeviceHarness<Device>::clock_off() {
+  clock_wanted_ = false;
+  tail_rises_ = 0;
+}
+
+template <class Device>
+void DeviceHarness<Device>::tick_clock() {
+  const bool rise = !gated_clock_->read();
+  if (!rise && !clock_wanted_ && tail_rises_ >= idle_tail_rises) {
+    gated_clock_->write(false);
+    clock_running_ = false;  // stopped low: nothing more is scheduled
+    return;
+  }
+  gated_clock_->write(rise);
+  if (rise) {
+    ++clock_rises_;
+    if (!clock_wanted_) ++tail_rises_;
+  }
+  const sc_core::sc_time high = period_ / 2;
+  clock_event_.notify(rise ? high : period_ - high);
 }
 
 template <class Device>
@@ -241,7 +322,7 @@ void DeviceHarness<Device>::trace(sc_core::sc_trace_file* file) const {
   for (const wire* w : {&pin27_start, &pin29_reset_n, &pin30_load_n, &pin31_load_r,
                         &pin32_load_g, &pin33_load_b, &pin34_carry, &pin35_done})
     sc_core::sc_trace(file, *w, scope + w->basename());
-  sc_core::sc_trace(file, pin28_clk, scope + "pin28_clk");
+  sc_core::sc_trace(file, *pin28_, scope + "pin28_clk");
   dut.trace(file);
 }
 

@@ -85,7 +85,8 @@ class ProtocolChecker : public sc_core::sc_module {
   void arm_watchdog();
   void report_falling_edge_start(const sc_core::sc_time& when);
 
-  // Clock knowledge: from the sc_clock (exact) or measured from pin 28's edges.
+  // Clock knowledge: from the sc_clock (exact) or measured from pin 28's edges (the
+  // shortest interval between rises, so that a clock may pause between operations).
   const sc_core::sc_clock* clock_ = nullptr;
   sc_core::sc_time period_ = sc_core::SC_ZERO_TIME;     ///< zero: not known yet
   sc_core::sc_time falling_phase_ = sc_core::SC_ZERO_TIME;  ///< sc_clock: offset of falls

@@ -1,6 +1,7 @@
 // `pin`: the TLM target as a transactor in front of the pin-level netlist.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "specular/pin_harness.h"
@@ -9,15 +10,26 @@
 namespace specular {
 
 /// Drives the device of Fig. 1 through PinHarness, as a TLM-to-pin bridge does
-/// (compare Xilinx libsystemctlm-soc's tlm2apb-bridge): b_transport first waits out
-/// the initiator's annotated delay, then drives pins 17–33 and waits on the clock
-/// (pin 28) until pin 35 rises. Cycle-accurate; call it from an SC_THREAD. START
-/// begins at the next rising clock edge at least a quarter period away (the
-/// harness's protocol); a batch streams one operation every 2 periods.
-/// If pin 29 was never pulsed since power-on, the first operation first resets the
-/// control unit (one clock period), as spec §3 wants before any start.
-/// The pins are written from the calling initiator's thread (SystemC's one-writer
-/// rule): let one initiator thread run operations.
+/// (compare Xilinx libsystemctlm-soc's tlm2apb-bridge). Cycle-accurate: an operation
+/// first waits out the initiator's annotated delay, then the transactor drives pins
+/// 17–33 and waits on the clock (pin 28) until pin 35 rises. START begins at the next
+/// rising clock edge at least a quarter period away (the harness's protocol); a batch
+/// streams one operation every 2 periods. If pin 29 was never pulsed since power-on,
+/// the first operation first resets the control unit (one clock period), as spec §3
+/// wants before any start. Pin 28 runs on demand (ClockMode::on_demand): from the
+/// operation's first edge to a few periods after pin 35 rises, on the grid of a clock
+/// that had run from time 0, so an idle target schedules nothing and sc_start()
+/// without a time end returns once the initiators are done.
+///
+/// The transactor owns the pins: one SC_THREAD of its own (`transact`) writes them,
+/// whoever calls (SystemC's one-writer rule). Writes are served one at a time in the
+/// order they arrive, as a bus bridge serialises them: while an operation runs, a
+/// write from any other thread (b_transport, or nb_transport_fw through the socket's
+/// nb-to-b threads) waits until pin 35 has risen and the operation's b_transport has
+/// returned, then runs — a START or an operand write waits its turn instead of being
+/// refused as busy. Reads never wait: they see STATUS.busy and the previous results
+/// while an operation runs. Debug transport never waits. Call b_transport from a
+/// thread (SC_THREAD or spawned).
 class SpecularPinTarget : public SpecularTarget {
  public:
   SpecularPinTarget(sc_core::sc_module_name name, const Config& config = Config{},
@@ -26,15 +38,30 @@ class SpecularPinTarget : public SpecularTarget {
 
   PinHarness harness;
 
+ protected:
+  void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay) override;
+
  private:
   void execute(const Operands& shared, const std::uint32_t* cos, std::size_t count,
                std::uint32_t* out, Result& last, sc_core::sc_time& delay) override;
 
+  void transact();  // the one process that drives the pins
   void on_reset();  // pin 29 fell: the control unit has seen a reset
 
   bool reset_seen_ = false;
   std::vector<Operands> operands_;
   std::vector<Result> results_;
+
+  // Turns: a ticket per write, served in ticket order (FIFO), as a bus bridge serialises.
+  std::uint64_t next_ticket_ = 0;
+  std::uint64_t serving_ = 0;
+  sc_core::sc_event turn_event_;
+
+  // The hand-over between the access in turn and the transactor.
+  bool job_posted_ = false;
+  bool job_done_ = false;
+  sc_core::sc_event job_event_;
+  sc_core::sc_event done_event_;
 };
 
 }  // namespace specular

@@ -62,8 +62,12 @@ class SpecularTarget : public sc_core::sc_module {
   virtual void execute(const Operands& shared, const std::uint32_t* cos, std::size_t count,
                        std::uint32_t* out, Result& last, sc_core::sc_time& delay) = 0;
 
+  /// Every access from the socket (b_transport, and nb_transport_fw through the
+  /// socket's nb-to-b conversion). An implementation whose `execute` waits serialises
+  /// accesses around this (SpecularPinTarget: one at a time, in arrival order).
+  virtual void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
+
  private:
-  void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
   unsigned int transport_dbg(tlm::tlm_generic_payload& tx);
 
   tlm::tlm_response_status write(const RegisterInfo& row, std::uint32_t first, std::uint32_t words,

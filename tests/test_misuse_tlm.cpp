@@ -191,7 +191,7 @@ TEST_P(MisuseTlm, AddressErrorForUnmappedMisalignedAndRunawayBursts) {
   });
 }
 
-// Oversized (8 bytes on a 4-byte register), zero, odd lengths and streaming.
+// Oversized (8 bytes on a register off a doubleword offset), zero, odd lengths and streaming.
 TEST_P(MisuseTlm, BurstErrorForBadLengthsAndStreaming) {
   run(GetParam(), [](Initiator& i) {
     std::vector<unsigned char> buffer(64, 0);
@@ -201,8 +201,8 @@ TEST_P(MisuseTlm, BurstErrorForBadLengthsAndStreaming) {
       unsigned streaming_width;
     };
     const Case cases[] = {
-        {0x024, 8, 0},    // N: a single register read as two words (oversized)
-        {0x020, 2, 0},    // COS: half a word
+        {0x024, 8, 0},    // N: two words off a doubleword offset (a 64-bit access is 8-aligned)
+        {0x020, 6, 0},    // COS: a word and a half
         {0x000, 0, 0},    // ID: nothing
         {0x000, 3, 0},    // ID: not a multiple of 4
         {0x040, 12, 0},   // OUT_R..OUT_B as one burst: single registers are not a window

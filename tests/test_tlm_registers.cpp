@@ -169,13 +169,17 @@ TEST(TlmRegisters, BusErrorsGetTheirTlmResponses) {
                 tlm::TLM_ADDRESS_ERROR_RESPONSE);
       expect_refused(e, ErrorCause::address, address, "address");
     }
-    // Burst: 8 bytes on a 4-byte register, a partial word, streaming on a window.
+    // Burst: 8 bytes on a register off a doubleword offset, 3 bytes, a sub-word write to
+    // a window, streaming on a window (docs/integration.md: the access widths).
     EXPECT_EQ(e.transport(tlm::TLM_READ_COMMAND, offset_of(Reg::n), words, 8),
               tlm::TLM_BURST_ERROR_RESPONSE);
-    expect_refused(e, ErrorCause::burst, offset_of(Reg::n), "8-byte read of N");
-    EXPECT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, offset_of(Reg::n), words, 2),
+    expect_refused(e, ErrorCause::burst, offset_of(Reg::n), "8-byte read of N at 0x24");
+    EXPECT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, offset_of(Reg::n), words, 3),
               tlm::TLM_BURST_ERROR_RESPONSE);
-    expect_refused(e, ErrorCause::burst, offset_of(Reg::n), "2-byte write of N");
+    expect_refused(e, ErrorCause::burst, offset_of(Reg::n), "3-byte write of N");
+    EXPECT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), words, 2),
+              tlm::TLM_BURST_ERROR_RESPONSE);
+    expect_refused(e, ErrorCause::burst, offset_of(Reg::batch_cos), "2-byte write of BATCH_COS");
     EXPECT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), words, 16, 4),
               tlm::TLM_BURST_ERROR_RESPONSE);
     expect_refused(e, ErrorCause::burst, offset_of(Reg::batch_cos), "streaming width 4");

@@ -16,6 +16,10 @@ struct Config;  // core.h: ROM 38's contents depend on the whole configuration
 
 namespace arith {
 
+/// The products' width: 64 × 64 bits before rounding. GCC's and Clang's 128-bit integer,
+/// marked __extension__ so that a consumer's -Wpedantic stays quiet on this header.
+__extension__ typedef __int128 wide_t;
+
 // The block functions take their formats as `const FormatSet&`: the run-time Formats
 // (SC_MODULEs, Core with any widths) or Core's DefaultFormats, whose members are
 // compile-time constants (`FormatSet::compile_time`), so that every shift and mask
@@ -33,27 +37,27 @@ inline code_t wrap(const FixedFormat& format, code_t code) {
 }
 
 /// Saturate a code to `format`'s range (downstream of register 9: silent, by design).
-inline code_t saturate(const FixedFormat& format, __int128 value) {
+inline code_t saturate(const FixedFormat& format, wide_t value) {
   if (value > format.max_code()) return format.max_code();
   if (value < format.min_code()) return format.min_code();
   return static_cast<code_t>(value);
 }
 
 /// Drop `shift` fraction bits, rounding half up (a multiplier's rounding stage).
-inline __int128 round_shift(__int128 value, int shift) {
-  if (shift <= 0) return value * (__int128{1} << -shift);  // a multiply: defined for value < 0
-  return (value + (__int128{1} << (shift - 1))) >> shift;
+inline wide_t round_shift(wide_t value, int shift) {
+  if (shift <= 0) return value * (wide_t{1} << -shift);  // a multiply: defined for value < 0
+  return (value + (wide_t{1} << (shift - 1))) >> shift;
 }
 
 /// The 128-bit tails of the multipliers, out of line: never taken at the default
 /// widths, they would only crowd the core's hot loop (docs/performance.md).
 [[gnu::cold, gnu::noinline]] inline code_t wide_multiply_round_saturate(const FixedFormat& format,
                                                                        code_t a, code_t b, int shift) {
-  return saturate(format, round_shift(static_cast<__int128>(a) * b, shift));
+  return saturate(format, round_shift(static_cast<wide_t>(a) * b, shift));
 }
 [[gnu::cold, gnu::noinline]] inline code_t wide_multiply_round_wrap(const FixedFormat& format,
                                                                    code_t a, code_t b, int shift) {
-  return wrap(format, static_cast<code_t>(round_shift(static_cast<__int128>(a) * b, shift)));
+  return wrap(format, static_cast<code_t>(round_shift(static_cast<wide_t>(a) * b, shift)));
 }
 
 /// A rounded value saturated to `format`: in range when only sign bits sit above the

@@ -13,6 +13,7 @@
 //   sc_core::sc_report_handler::set_actions(specular::report::reset_mid_operation,
 //                                           sc_core::SC_DO_NOTHING);
 //
+// SpecularTarget reports its first refusal of each kind as tlm_access_refused.
 // docs/misuse.md lists, for each type, the misuse, the spec rule it breaks and what
 // the device does with it.
 #pragma once
@@ -54,6 +55,13 @@ inline constexpr const char* protocol_types[] = {
     start_while_busy,  start_too_soon,   start_at_falling_edge, start_during_reset,
     start_before_reset, load_while_busy, reset_mid_operation,   no_clock,
     no_done};
+
+// ---- TLM target (SpecularTarget, every implementation) ------------------------------
+
+/// A bus access refused (STATUS.error set): the first refusal of each cause per target
+/// is reported, naming the payload field or register, its value and the rule it
+/// breaks; later ones only set STATUS and ERROR_ADDRESS.
+inline constexpr const char tlm_access_refused[] = "/specular/tlm/access-refused";
 
 }  // namespace report
 }  // namespace specular

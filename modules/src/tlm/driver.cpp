@@ -8,6 +8,23 @@ namespace specular {
 
 using sc_core::sc_time;
 
+namespace {
+// tlm_generic_payload::get_response_string() names the payload's current status, and
+// the payload is reused to ask STATUS why: the failed status is named from its value.
+const char* response_name(tlm::tlm_response_status status) {
+  switch (status) {
+    case tlm::TLM_OK_RESPONSE: return "TLM_OK_RESPONSE";
+    case tlm::TLM_INCOMPLETE_RESPONSE: return "TLM_INCOMPLETE_RESPONSE";
+    case tlm::TLM_GENERIC_ERROR_RESPONSE: return "TLM_GENERIC_ERROR_RESPONSE";
+    case tlm::TLM_ADDRESS_ERROR_RESPONSE: return "TLM_ADDRESS_ERROR_RESPONSE";
+    case tlm::TLM_COMMAND_ERROR_RESPONSE: return "TLM_COMMAND_ERROR_RESPONSE";
+    case tlm::TLM_BURST_ERROR_RESPONSE: return "TLM_BURST_ERROR_RESPONSE";
+    case tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE: return "TLM_BYTE_ENABLE_ERROR_RESPONSE";
+  }
+  return "an unknown response status";
+}
+}  // namespace
+
 SpecularDriver::SpecularDriver(port_type& port, std::uint64_t base,
                                tlm_utils::tlm_quantumkeeper& keeper)
     : port_(port), base_(base), keeper_(keeper) {}
@@ -47,21 +64,27 @@ void SpecularDriver::fail(tlm::tlm_command command, std::uint32_t offset, unsign
   shared_loaded_ = false;  // the target may hold other values than we think
   // Ask the target why, as software would: read STATUS (through the same port).
   ErrorCause cause = ErrorCause::none;
+  bool status_read = false;
   std::uint32_t status_word = 0;
   prepare(tlm::TLM_READ_COMMAND, offset_of(Reg::status),
           reinterpret_cast<unsigned char*>(&status_word), 4);
   sc_time local = keeper_.get_local_time();
   port_->b_transport(tx_, local);
   keeper_.set(local);
-  if (tx_.get_response_status() == tlm::TLM_OK_RESPONSE)
+  if (tx_.get_response_status() == tlm::TLM_OK_RESPONSE) {
+    status_read = true;
     cause = static_cast<ErrorCause>((status_word & status_bits::cause_mask) >> status_bits::cause_shift);
+  }
 
   const RegisterInfo* row = decode(offset);
   std::ostringstream s;
   s << (command == tlm::TLM_READ_COMMAND ? "read of " : "write to ")
     << (row != nullptr ? row->name : "unmapped") << " (offset 0x" << std::hex << offset
-    << std::dec << ", " << length << " bytes) refused: " << tx_.get_response_string()
-    << ", STATUS cause " << to_string(cause) << " (" << describe(cause) << ")";
+    << std::dec << ", " << length << " bytes) refused: " << response_name(status);
+  if (status_read)
+    s << ", STATUS cause " << to_string(cause) << " (" << describe(cause) << ")";
+  else
+    s << ", and STATUS could not be read to tell why";
   throw TransportError(s.str(), status, cause);
 }
 

@@ -42,8 +42,8 @@ const char* describe(ErrorCause cause) {
     case ErrorCause::read_only: return "write to a read-only register or window";
     case ErrorCause::reserved_bits: return "CONTROL written with a bit other than START set";
     case ErrorCause::busy: return "START or an operand write while an operation is in flight";
-    case ErrorCause::address: return "unmapped or misaligned address, or a burst running past its window";
-    case ErrorCause::burst: return "length not a multiple of 4, a burst on a single register, or streaming";
+    case ErrorCause::address: return "unmapped or misaligned address (not naturally aligned), or a burst running past its window";
+    case ErrorCause::burst: return "a length the row does not take (registers: 1, 2, 4, or 8 at a doubleword offset; windows: whole words), a sub-word write to a window, or streaming";
     case ErrorCause::byte_enable: return "byte enables that disable any byte";
     case ErrorCause::command: return "a command other than read, write or ignore";
   }

@@ -1,8 +1,12 @@
 #include "specular/tlm/target.h"
 
 #include <cstring>
+#include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+
+#include "specular/report_ids.h"
 
 namespace specular {
 
@@ -37,6 +41,46 @@ bool all_bytes_enabled(const unsigned char* enables, unsigned enables_length, un
   return true;
 }
 
+const char* command_name(tlm::tlm_command command) {
+  switch (command) {
+    case tlm::TLM_READ_COMMAND: return "read";
+    case tlm::TLM_WRITE_COMMAND: return "write";
+    case tlm::TLM_IGNORE_COMMAND: return "ignore";
+  }
+  return "unknown command";
+}
+
+const char* response_name(tlm::tlm_response_status status) {
+  switch (status) {
+    case tlm::TLM_OK_RESPONSE: return "TLM_OK_RESPONSE";
+    case tlm::TLM_INCOMPLETE_RESPONSE: return "TLM_INCOMPLETE_RESPONSE";
+    case tlm::TLM_GENERIC_ERROR_RESPONSE: return "TLM_GENERIC_ERROR_RESPONSE";
+    case tlm::TLM_ADDRESS_ERROR_RESPONSE: return "TLM_ADDRESS_ERROR_RESPONSE";
+    case tlm::TLM_COMMAND_ERROR_RESPONSE: return "TLM_COMMAND_ERROR_RESPONSE";
+    case tlm::TLM_BURST_ERROR_RESPONSE: return "TLM_BURST_ERROR_RESPONSE";
+    case tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE: return "TLM_BYTE_ENABLE_ERROR_RESPONSE";
+  }
+  return "unknown response";
+}
+
+/// Registers whose sub-word writes merge into the stored word (docs/integration.md).
+bool takes_sub_word_writes(Reg reg) {
+  switch (reg) {
+    case Reg::status:
+    case Reg::control:
+    case Reg::cos:
+    case Reg::n:
+    case Reg::r:
+    case Reg::g:
+    case Reg::b: return true;
+    default: return false;
+  }
+}
+
+// ERROR_ADDRESS is 32 bits: an address beyond them shows as this value, which no
+// register has (the map ends at map_size), rather than as its low bits.
+constexpr std::uint32_t error_address_beyond_32_bits = 0xFFFFFFFFu;
+
 std::uint32_t low_word(code_t code) { return static_cast<std::uint32_t>(code); }
 std::uint32_t high_word(code_t code) {
   return static_cast<std::uint32_t>(static_cast<std::uint64_t>(code) >> 32);
@@ -53,7 +97,8 @@ SpecularTarget::SpecularTarget(sc_core::sc_module_name name, const Config& confi
       formats_(config.widths),
       period_(clock_period),
       batch_cos_(batch_capacity, 0),
-      batch_out_(3 * batch_capacity, 0) {
+      batch_out_(3 * batch_capacity, 0),
+      irq_default_("done_irq_default", done_irq) {
   SPECULAR_HAS_PROCESS(SpecularTarget);
   require_32_bits("COS", formats_.cos);
   require_32_bits("N", formats_.n);
@@ -82,48 +127,178 @@ SpecularTarget::SpecularTarget(sc_core::sc_module_name name, const Config& confi
 
 // ---- bus checks --------------------------------------------------------------------
 
-void SpecularTarget::b_transport(tlm::tlm_generic_payload& tx, sc_time& delay) {
-  const std::uint64_t address = tx.get_address();
-  const unsigned length = tx.get_data_length();
-
-  const RegisterInfo* row = decode(address);
+tlm::tlm_response_status SpecularTarget::check_access(const tlm::tlm_generic_payload& tx,
+                                                      const Attempt& attempt,
+                                                      const RegisterInfo*& row) {
+  const std::uint64_t address = attempt.address;
+  const unsigned length = attempt.length;
+  row = decode(address & ~std::uint64_t{3});
   if (row == nullptr)
-    return tx.set_response_status(
-        refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address, address));
-  if (length == 0 || length % 4 != 0 || (row->words == 1 && length != 4) ||
-      tx.get_streaming_width() < length)
-    return tx.set_response_status(
-        refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, address));
-  const std::uint32_t first = static_cast<std::uint32_t>(address - row->offset) / 4;
-  const std::uint32_t words = length / 4;
-  if (first + words > row->words)  // the burst's tail is not mapped to this window
-    return tx.set_response_status(refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address,
-                                         std::uint64_t{row->end()}));
+    return refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address, address, attempt,
+                  {"address", address,
+                   address >= map_size ? "the map decodes offsets below 0x8000 (map_size) only"
+                                       : "this offset is a hole in the register map"});
+  const bool sub_word = length == 1 || length == 2;
+  // Natural alignment: a sub-word inside its word, words and bursts on a word, a
+  // doubleword on two registers at a doubleword offset (a 64-bit core's access).
+  if (address % (sub_word ? length : 4) != 0)
+    return refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address, address, attempt,
+                  {"address", address,
+                   "an access of 1, 2 or 4 bytes must be aligned to its length, bursts to a word"});
+  if (length == 0 || !(sub_word || length % 4 == 0))
+    return refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, address, attempt,
+                  {"data_length", length,
+                   "registers take 1, 2, 4 or 8 bytes, windows a multiple of 4"});
+  if (row->words == 1 && length > 4 && (length != 8 || address % 8 != 0))
+    return refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, address, attempt,
+                  {"data_length", length,
+                   "a single register takes 1, 2 or 4 bytes, or 8 at a doubleword offset "
+                   "(two registers)"});
+  const unsigned streaming = tx.get_streaming_width();
+  if (streaming != 0 && streaming < length)
+    return refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, address, attempt,
+                  {"streaming_width", streaming,
+                   "the streaming width must be 0 or at least the data length: the registers "
+                   "are not FIFOs"});
+  if (row->words > 1 && !sub_word) {
+    const std::uint32_t first = static_cast<std::uint32_t>(address - row->offset) / 4;
+    if (first + length / 4 > row->words)  // the burst's tail is not mapped to this window
+      return refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address,
+                    std::uint64_t{row->end()}, attempt,
+                    {"data_length", length, "a burst must end inside its window"});
+  }
   if (const unsigned char* enables = tx.get_byte_enable_ptr();
       enables != nullptr && !all_bytes_enabled(enables, tx.get_byte_enable_length(), length))
-    return tx.set_response_status(
-        refuse(tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, ErrorCause::byte_enable, address));
+    return refuse(tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE, ErrorCause::byte_enable, address, attempt,
+                  {"byte_enable_ptr", tx.get_byte_enable_length(),
+                   "byte enables must enable every byte (or be absent); use a shorter "
+                   "access for part of a word"});
+  if (attempt.command != tlm::TLM_READ_COMMAND && attempt.command != tlm::TLM_WRITE_COMMAND &&
+      attempt.command != tlm::TLM_IGNORE_COMMAND)
+    return refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::command, address, attempt,
+                  {"command", static_cast<std::uint64_t>(attempt.command),
+                   "the command must be read, write or ignore"});
+  return tlm::TLM_OK_RESPONSE;
+}
 
-  switch (tx.get_command()) {
-    case tlm::TLM_READ_COMMAND:
-      read(*row, first, words, tx.get_data_ptr());
-      return tx.set_response_status(tlm::TLM_OK_RESPONSE);
-    case tlm::TLM_WRITE_COMMAND:
-      if (row->access == Access::read_only)
-        return tx.set_response_status(
-            refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only, address));
-      return tx.set_response_status(write(*row, first, words, tx.get_data_ptr(), address, delay));
-    case tlm::TLM_IGNORE_COMMAND:
-      return tx.set_response_status(tlm::TLM_OK_RESPONSE);
+void SpecularTarget::b_transport(tlm::tlm_generic_payload& tx, sc_time& delay) {
+  const Attempt attempt{tx.get_command(), tx.get_address(), tx.get_data_length()};
+  const RegisterInfo* row = nullptr;
+  if (const tlm::tlm_response_status checked = check_access(tx, attempt, row);
+      checked != tlm::TLM_OK_RESPONSE)
+    return tx.set_response_status(checked);
+  if (attempt.command == tlm::TLM_IGNORE_COMMAND)
+    return tx.set_response_status(tlm::TLM_OK_RESPONSE);
+  if (attempt.length < 4)
+    return tx.set_response_status(sub_word(*row, attempt, tx.get_data_ptr(), delay));
+  if (row->words == 1 && attempt.length == 8)
+    return tx.set_response_status(double_word(*row, attempt, tx.get_data_ptr(), delay));
+
+  const std::uint32_t first = static_cast<std::uint32_t>(attempt.address - row->offset) / 4;
+  const std::uint32_t words = attempt.length / 4;
+  if (attempt.command == tlm::TLM_READ_COMMAND) {
+    read(*row, first, words, tx.get_data_ptr());
+    return tx.set_response_status(tlm::TLM_OK_RESPONSE);
   }
-  tx.set_response_status(refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::command, address));
+  if (row->access == Access::read_only)
+    return tx.set_response_status(refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only,
+                                         attempt.address, attempt,
+                                         {row->name, attempt.address, "a read-only register"}));
+  tx.set_response_status(
+      write(*row, first, words, tx.get_data_ptr(), attempt.address, attempt, delay));
+}
+
+tlm::tlm_response_status SpecularTarget::sub_word(const RegisterInfo& row, const Attempt& attempt,
+                                                  unsigned char* data, sc_time& delay) {
+  const std::uint32_t index = static_cast<std::uint32_t>(attempt.address - row.offset) / 4;
+  const unsigned lane = static_cast<unsigned>(attempt.address % 4);
+  // The word as the bus sees it (host byte order, as whole-word accesses carry it);
+  // the access takes or replaces bytes lane .. lane + length - 1 of it.
+  unsigned char bytes[4];
+  if (attempt.command == tlm::TLM_READ_COMMAND) {
+    store(bytes, peek(row, index));
+    std::memcpy(data, bytes + lane, attempt.length);
+    return tlm::TLM_OK_RESPONSE;
+  }
+  if (row.access == Access::read_only)
+    return refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only, attempt.address,
+                  attempt, {row.name, attempt.address, "a read-only register"});
+  if (!takes_sub_word_writes(row.reg))
+    return refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, attempt.address, attempt,
+                  {row.name, attempt.length,
+                   "windows take whole words only: each word feeds or starts an operation"});
+  // STATUS (W1C) and CONTROL (self-clearing) see the bytes written and zeros
+  // elsewhere; the operand registers keep their other bytes (read-modify-write).
+  const bool merges = row.reg != Reg::status && row.reg != Reg::control;
+  store(bytes, merges ? word(row.reg) : 0u);
+  std::memcpy(bytes + lane, data, attempt.length);
+  return write(row, 0, 1, bytes, attempt.address, attempt, delay);
+}
+
+tlm::tlm_response_status SpecularTarget::double_word(const RegisterInfo& row,
+                                                     const Attempt& attempt, unsigned char* data,
+                                                     sc_time& delay) {
+  const std::uint64_t second_address = attempt.address + 4;
+  const RegisterInfo* second = decode(second_address);
+  if (second == nullptr)
+    return refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address, second_address, attempt,
+                  {"address", second_address,
+                   "an 8-byte access covers two registers; its second word is a hole"});
+  if (attempt.command == tlm::TLM_READ_COMMAND) {
+    store(data, peek(row, 0));
+    store(data + 4, peek(*second, 0));
+    return tlm::TLM_OK_RESPONSE;
+  }
+  // All or nothing, as for a burst: both words are vetted before either is written.
+  for (const auto& [r, address, offset] :
+       {std::tuple{&row, attempt.address, 0u}, std::tuple{second, second_address, 4u}})
+    if (const tlm::tlm_response_status verdict = vet_write(*r, load(data + offset), attempt, address);
+        verdict != tlm::TLM_OK_RESPONSE)
+      return verdict;
+  const tlm::tlm_response_status first = write(row, 0, 1, data, attempt.address, attempt, delay);
+  if (first != tlm::TLM_OK_RESPONSE) return first;
+  return write(*second, 0, 1, data + 4, second_address, attempt, delay);
+}
+
+tlm::tlm_response_status SpecularTarget::vet_write(const RegisterInfo& row, std::uint32_t value,
+                                                   const Attempt& attempt,
+                                                   std::uint64_t address) {
+  if (row.access == Access::read_only)
+    return refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only, address, attempt,
+                  {row.name, address, "a read-only register"});
+  if (row.reg == Reg::status) return tlm::TLM_OK_RESPONSE;
+  if (const ErrorCause cause = check_value(row.reg, value); cause != ErrorCause::none)
+    return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address, attempt,
+                  {row.name, value, describe(cause)});
+  const bool acts = row.reg != Reg::control || (value & control_bits::start) != 0;
+  if (acts && busy_)
+    return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address, attempt,
+                  {row.name, value, describe(ErrorCause::busy)});
+  return tlm::TLM_OK_RESPONSE;
 }
 
 tlm::tlm_response_status SpecularTarget::refuse(tlm::tlm_response_status status, ErrorCause cause,
-                                                std::uint64_t address) {
+                                                std::uint64_t address, const Attempt& attempt,
+                                                const Why& why) {
   error_ = true;
   cause_ = cause;
-  word(Reg::error_address) = static_cast<std::uint32_t>(address);
+  word(Reg::error_address) = address > 0xFFFFFFFFu ? error_address_beyond_32_bits
+                                                   : static_cast<std::uint32_t>(address);
+  // An integrator's first refused access must say why in the log, not only in STATUS
+  // (which a refused STATUS read cannot show); once per cause keeps a fuzzer quiet.
+  const std::uint32_t bit = 1u << static_cast<unsigned>(cause);
+  if ((reported_causes_ & bit) == 0) {
+    reported_causes_ |= bit;
+    std::ostringstream s;
+    s << name() << ": " << command_name(attempt.command) << " of " << attempt.length
+      << " byte(s) at offset 0x" << std::hex << attempt.address << " refused with "
+      << response_name(status) << ": " << why.field << " = 0x" << why.value << std::dec
+      << " (" << why.value << "): " << why.rule << ". STATUS.error is set, cause "
+      << to_string(cause) << " (" << static_cast<int>(cause) << "), ERROR_ADDRESS 0x" << std::hex
+      << word(Reg::error_address) << std::dec
+      << "; later refusals with this cause set STATUS only (docs/integration.md)";
+    SC_REPORT_WARNING(report::tlm_access_refused, s.str().c_str());
+  }
   return status;
 }
 
@@ -177,7 +352,12 @@ ErrorCause SpecularTarget::check_value(Reg reg, std::uint32_t value) const {
 
 tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uint32_t first,
                                                std::uint32_t words, const unsigned char* data,
-                                               std::uint64_t address, sc_time& delay) {
+                                               std::uint64_t address, const Attempt& attempt,
+                                               sc_time& delay) {
+  const auto busy = [&](std::uint64_t value) {
+    return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address, attempt,
+                  {row.name, value, describe(ErrorCause::busy)});
+  };
   switch (row.reg) {
     case Reg::status: {  // write 1 to clear
       const std::uint32_t value = load(data);
@@ -195,22 +375,25 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
     case Reg::control: {
       const std::uint32_t value = load(data);
       if (const ErrorCause cause = check_value(Reg::control, value); cause != ErrorCause::none)
-        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address);
+        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address, attempt,
+                      {row.name, value, describe(cause)});
       if (value & control_bits::start) {
-        if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
+        if (busy_) return busy(value);
         run(&word(Reg::cos), 1, &word(Reg::out_r), delay);
       }
       return tlm::TLM_OK_RESPONSE;
     }
     case Reg::operands: {
       // Spec §3 protocol: registers 2, 10–12 hold still until 35 rises.
-      if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
+      if (busy_) return busy(load(data));
       // All or nothing, as one register write each would check them: nothing is
       // stored (and nothing starts) unless every word is acceptable.
       for (std::uint32_t i = 0; i < words; ++i) {
-        const ErrorCause cause = check_value(operand_register(first + i), load(data + 4 * i));
+        const Reg reg = operand_register(first + i);
+        const ErrorCause cause = check_value(reg, load(data + 4 * i));
         if (cause != ErrorCause::none)
-          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i);
+          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i, attempt,
+                        {info(reg).name, load(data + 4 * i), describe(cause)});
       }
       bool start = false;
       for (std::uint32_t i = 0; i < words; ++i) {
@@ -224,23 +407,25 @@ tlm::tlm_response_status SpecularTarget::write(const RegisterInfo& row, std::uin
       return tlm::TLM_OK_RESPONSE;
     }
     case Reg::batch_cos: {
-      if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
+      if (busy_) return busy(load(data));
       // All or nothing: check every word before any is stored or computed.
       for (std::uint32_t i = 0; i < words; ++i)
         if (const ErrorCause cause = check_value(Reg::batch_cos, load(data + 4 * i));
             cause != ErrorCause::none)
-          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i);
+          return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address + 4 * i, attempt,
+                        {row.name, load(data + 4 * i), describe(cause)});
       std::memcpy(&batch_cos_[first], data, 4 * words);
       run(&batch_cos_[first], words, &batch_out_[3 * first], delay);
       return tlm::TLM_OK_RESPONSE;
     }
     default: {  // operand registers: plain storage, range-checked, never clamped
       // Spec §3 protocol: registers 2, 10–12 hold still until 35 rises.
-      if (busy_) return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, ErrorCause::busy, address);
       const std::uint32_t value = load(data);
+      if (busy_) return busy(value);
       const ErrorCause cause = check_value(row.reg, value);
       if (cause != ErrorCause::none)
-        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address);
+        return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address, attempt,
+                      {row.name, value, describe(cause)});
       word(row.reg) = value;
       return tlm::TLM_OK_RESPONSE;
     }
@@ -278,12 +463,25 @@ void SpecularTarget::drive_irq() {
   // Notifications keep only the earliest pending time, so this method recomputes the
   // level from the register state and re-arms itself for a rise still ahead.
   const sc_time now = sc_core::sc_time_stamp();
+  bool level = done_;
   if (done_ && now < done_at_) {
-    done_irq.write(false);
+    level = false;
     irq_event_.notify(done_at_ - now);
-    return;
   }
-  done_irq.write(done_);
+  done_irq.write(level);
+  if (level == irq_level_) return;
+  irq_level_ = level;
+  for (const auto& callback : irq_callbacks_) callback(level);
+}
+
+SpecularTarget::DefaultIrqBinding::DefaultIrqBinding(sc_core::sc_module_name name,
+                                                     sc_core::sc_out<bool>& port)
+    : sc_module(name), port(port), line("line") {}
+
+void SpecularTarget::DefaultIrqBinding::before_end_of_elaboration() {
+  // A platform that takes the interrupt by on_done_irq(), or not at all, need not
+  // bind a signal: SystemC would stop elaboration with E109 (port not bound).
+  if (port.bind_count() == 0) port.bind(line);
 }
 
 // ---- debug transport ---------------------------------------------------------------

@@ -72,7 +72,7 @@ enum class ErrorCause : std::uint8_t {
   reserved_bits = 5,     ///< CONTROL written with an undefined bit set
   busy = 6,              ///< START or operand write while an operation is in flight
   address = 7,           ///< unmapped or misaligned address, or a burst past a window
-  burst = 8,             ///< length not a multiple of 4, burst on a register, streaming
+  burst = 8,             ///< a length the row does not take, sub-word window write, streaming
   byte_enable = 9,       ///< byte enables other than "all bytes"
   command = 10,          ///< a command other than read, write, ignore
 };
@@ -156,7 +156,7 @@ inline constexpr std::array<RegisterInfo, register_count> register_map{{
     {Reg::status,         "STATUS",         0x00C, 1, Access::write_1_to_clear, 0,           ErrorCause::none,              "[0] busy, [1] done (W1C, drives done_irq), [2] error (W1C, clears cause and ERROR_ADDRESS), [15:8] error cause"},
     {Reg::control,        "CONTROL",        0x010, 1, Access::self_clearing,    0,           ErrorCause::reserved_bits,     "[0] START: run one operation on COS, N, R, G, B; other bits refused; reads 0"},
     {Reg::batch_capacity, "BATCH_CAPACITY", 0x014, 1, Access::read_only,        batch_capacity, ErrorCause::none,             "Operations per batch transaction (BATCH_COS words)"},
-    {Reg::error_address,  "ERROR_ADDRESS",  0x018, 1, Access::read_only,        0,           ErrorCause::none,              "Byte offset of the last refused access (the offending word in a burst)"},
+    {Reg::error_address,  "ERROR_ADDRESS",  0x018, 1, Access::read_only,        0,           ErrorCause::none,              "Byte offset of the last refused access (the offending word in a burst); 0xFFFFFFFF for an address above 32 bits"},
     {Reg::cos,            "COS",            0x020, 1, Access::read_write,       0,           ErrorCause::cos_out_of_range,  "cos λ code, U1.16: 0..65536 (= 1.0); larger is refused"},
     {Reg::n,              "N",              0x024, 1, Access::read_write,       1,           ErrorCause::n_out_of_range,    "Specular exponent n: 1..1000; other values are refused"},
     {Reg::r,              "R",              0x028, 1, Access::read_write,       0,           ErrorCause::rgb_out_of_range,  "Light intensity R (register 10): 0..255"},

@@ -8,6 +8,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <tlm>
@@ -19,27 +20,46 @@
 
 namespace specular {
 
-/// The register file and the bus checks, shared by both implementations.
+/// The register file and the bus checks, shared by every implementation.
 ///
 /// Every access is checked as Accellera's LT examples do, in this order: address
-/// (mapped, word-aligned) → TLM_ADDRESS_ERROR_RESPONSE; length (a multiple of 4; 4 on
-/// a single register; within a window) and streaming width (no streaming) →
-/// TLM_BURST_ERROR_RESPONSE (a burst running past a window's end is an address
-/// error); byte enables (only "all bytes" is accepted) →
+/// (mapped; naturally aligned: 1 and 2 bytes inside a word, 4 on a word, 8 on a
+/// doubleword, bursts on a word) → TLM_ADDRESS_ERROR_RESPONSE; length (1, 2, 4 or 8
+/// on the registers, a multiple of 4 within a window) and streaming width (0 or at
+/// least the length: no streaming) → TLM_BURST_ERROR_RESPONSE (a burst running past a
+/// window's end is an address error); byte enables (only "all bytes" is accepted) →
 /// TLM_BYTE_ENABLE_ERROR_RESPONSE; command (read, write, ignore; no writes to
 /// read-only rows) → TLM_COMMAND_ERROR_RESPONSE. Out-of-range values get
 /// TLM_GENERIC_ERROR_RESPONSE and are never clamped. Every refusal sets STATUS.error
-/// with its cause and ERROR_ADDRESS; the refused access changes nothing else.
+/// with its cause and ERROR_ADDRESS; the refused access changes nothing else. The
+/// first refusal of each cause is also reported (SC_REPORT_WARNING,
+/// report::tlm_access_refused) naming the field, its value and the rule it breaks.
+///
+/// Access widths (docs/integration.md): a read of 1 or 2 bytes returns those bytes of
+/// the word; a write of 1 or 2 bytes merges into STATUS (W1C), CONTROL and the operand
+/// registers COS, N, R, G, B, the merged word checked as a whole; windows refuse
+/// sub-word writes. An 8-byte access at a doubleword offset covers the two
+/// consecutive registers there, all or nothing.
 ///
 /// `done_irq` is a level: high while STATUS.done is set, i.e. from the end of an
 /// operation until the next START (or BATCH_COS write) or a write of 1 to
 /// STATUS.done. Its edges are scheduled at the initiator's annotated times; under
 /// temporal decoupling a done/clear pair inside one quantum may not show as a pulse
-/// (STATUS always shows it).
+/// (STATUS always shows it). It may be left unbound (the target then drives a signal
+/// of its own), and on_done_irq() calls back at each of its edges.
 class SpecularTarget : public sc_core::sc_module {
  public:
   tlm_utils::simple_target_socket<SpecularTarget, 32> socket;
   sc_core::sc_out<bool> done_irq;
+
+  /// Called at each edge of done_irq with its new level, from the process that drives
+  /// it (an SC_METHOD: the callback must not wait). For interrupt controllers that
+  /// take a call per interrupt rather than a signal; works bound or unbound.
+  void on_done_irq(std::function<void(bool)> callback) {
+    irq_callbacks_.push_back(std::move(callback));
+  }
+  /// The level done_irq drives (also when it is left unbound).
+  bool done_irq_level() const { return irq_level_; }
 
   const Config& config() const { return config_; }
   const Formats& formats() const { return formats_; }
@@ -68,11 +88,36 @@ class SpecularTarget : public sc_core::sc_module {
   virtual void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
 
  private:
+  /// What an access tried, for the refusal's report.
+  struct Attempt {
+    tlm::tlm_command command;
+    std::uint64_t address;
+    unsigned length;
+  };
+  /// Why it is refused: the payload field or register, its value, the rule broken.
+  struct Why {
+    const char* field;
+    std::uint64_t value;
+    const char* rule;
+  };
   unsigned int transport_dbg(tlm::tlm_generic_payload& tx);
 
+  /// The checks of the class comment up to the byte enables; TLM_OK_RESPONSE if the
+  /// access may go on to the command.
+  tlm::tlm_response_status check_access(const tlm::tlm_generic_payload& tx,
+                                        const Attempt& attempt, const RegisterInfo*& row);
+  /// A 1- or 2-byte access inside the word of `row` (byte lane address % 4).
+  tlm::tlm_response_status sub_word(const RegisterInfo& row, const Attempt& attempt,
+                                    unsigned char* data, sc_core::sc_time& delay);
+  /// An 8-byte access on two single registers (`row` and the next word).
+  tlm::tlm_response_status double_word(const RegisterInfo& row, const Attempt& attempt,
+                                       unsigned char* data, sc_core::sc_time& delay);
+  /// What a single-register write of `value` would be refused for, without doing it.
+  tlm::tlm_response_status vet_write(const RegisterInfo& row, std::uint32_t value,
+                                     const Attempt& attempt, std::uint64_t address);
   tlm::tlm_response_status write(const RegisterInfo& row, std::uint32_t first, std::uint32_t words,
                                  const unsigned char* data, std::uint64_t address,
-                                 sc_core::sc_time& delay);
+                                 const Attempt& attempt, sc_core::sc_time& delay);
   void read(const RegisterInfo& row, std::uint32_t first, std::uint32_t words,
             unsigned char* data) const;
   /// One word as a read sees it (no side effects).
@@ -82,8 +127,10 @@ class SpecularTarget : public sc_core::sc_module {
   /// The value check of a write: the ranges of the operand rows, CONTROL's reserved
   /// bits; ErrorCause::none when `value` is acceptable.
   ErrorCause check_value(Reg reg, std::uint32_t value) const;
+  /// Sets STATUS.error, its cause and ERROR_ADDRESS (`address`, or 0xFFFFFFFF above
+  /// 32 bits) and reports the first refusal of each cause; returns `status`.
   tlm::tlm_response_status refuse(tlm::tlm_response_status status, ErrorCause cause,
-                                  std::uint64_t address);
+                                  std::uint64_t address, const Attempt& attempt, const Why& why);
   void run(const std::uint32_t* cos, std::size_t count, std::uint32_t* out,
            sc_core::sc_time& delay);
   std::uint32_t status_word() const;
@@ -105,6 +152,20 @@ class SpecularTarget : public sc_core::sc_module {
   ErrorCause cause_ = ErrorCause::none;
   sc_core::sc_time done_at_;     ///< when done rises, in the initiator's (annotated) time
   sc_core::sc_event irq_event_;  ///< wakes drive_irq at the next edge of done_irq
+  std::uint32_t reported_causes_ = 0;  ///< bit c: a refusal with cause c was reported
+  bool irq_level_ = false;
+  std::vector<std::function<void(bool)>> irq_callbacks_;
+
+  /// Binds done_irq to a signal of its own if nobody bound it by the end of
+  /// elaboration (a child module, so that a derived target's own
+  /// before_end_of_elaboration cannot skip it).
+  struct DefaultIrqBinding : sc_core::sc_module {
+    DefaultIrqBinding(sc_core::sc_module_name name, sc_core::sc_out<bool>& port);
+    void before_end_of_elaboration() override;
+    sc_core::sc_out<bool>& port;
+    sc_core::sc_signal<bool> line;
+  };
+  DefaultIrqBinding irq_default_;
 };
 
 }  // namespace specular

@@ -1,7 +1,7 @@
 // Issue 20: an idle target costs (almost) nothing. The pin target's clock (pin 28)
 // runs on demand: no edges while no operation runs, so simulated time advances over
-// an idle target without work proportional to it (counted in delta cycles and clock
-// rises, never timed), and sc_start() without a time end returns once the initiator
+// an idle target without work proportional to it (pin 28's changes counted, pending
+// events checked, never timed), and sc_start() without a time end returns once the initiator
 // is done — on lt, pin and rtl alike.
 #include <gtest/gtest.h>
 

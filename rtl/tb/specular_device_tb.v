@@ -178,6 +178,24 @@ module specular_device_tb;
     done_seen = done_seen + 1;
   end
 
+`ifdef GATE_LEVEL
+  // Fig. 2's strobes with real delays (docs/silicon.md, hazards): pulses of strobe 37
+  // (high) and pin 35 (low) and the narrowest of each, against the DFFPOSX1's minimum
+  // pulse width that register 9 needs.
+  real    rise37 = -1.0, fall35 = -1.0, narrowest37 = 1.0e9, narrowest35 = 1.0e9;
+  integer pulses37 = 0, pulses35 = 0;
+  always @(posedge obs_write37) rise37 = $realtime;
+  always @(negedge obs_write37) if (rise37 >= 0) begin
+    pulses37 = pulses37 + 1;
+    if ($realtime - rise37 < narrowest37) narrowest37 = $realtime - rise37;
+  end
+  always @(negedge pin35_done) fall35 = $realtime;
+  always @(posedge pin35_done) if (fall35 >= 0) begin
+    pulses35 = pulses35 + 1;
+    if ($realtime - fall35 < narrowest35) narrowest35 = $realtime - fall35;
+  end
+`endif
+
   // ---- driver ----
   real     next_start, prev_start;
   integer  i, resets = 0, back_to_back = 0;
@@ -293,6 +311,10 @@ module specular_device_tb;
              count, pass1_seen, done_seen);
     $display("specular_device_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s",
              count, back_to_back, resets, checks, VECTORS);
+`ifdef GATE_LEVEL
+    $display("specular_device_tb: strobes: 37 %0d pulses (narrowest %.3f ns), 35 %0d pulses (narrowest %.3f ns) for %0d operations and %0d aborted",
+             pulses37, narrowest37, pulses35, narrowest35, count, resets);
+`endif
     $finish;
   end
 

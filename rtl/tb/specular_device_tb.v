@@ -34,6 +34,14 @@ module specular_device_tb;
   parameter real T = 10.0;      // clock period (ns)
   parameter RESET_EVERY = 17;
   parameter MAX_VECTORS = 8192;
+  // Gate level (scripts/gatesim.sh, `define GATE_LEVEL): 35's edges come a gate delay
+  // after the clock's, so their time is checked to EDGE_TOLERANCE periods (0: exactly),
+  // and the control unit is checked idle IDLE_WAIT periods after reset moves.
+  parameter real EDGE_TOLERANCE = 0.0;
+  parameter real IDLE_WAIT = 0.01;
+  // Data of pins 18, 21-23 LOAD_SETUP periods before their strobes 30-33 rise (0: with
+  // them, as the zero-delay models allow; a flip-flop with setup time needs more).
+  parameter real LOAD_SETUP = 0.0;
 
   // The device's width parameters (rtl/specular_device.v; defaults: docs/design.md's
   // formats, as specular_tb uses them without --width).
@@ -75,6 +83,12 @@ module specular_device_tb;
   wire               cfg_literal = LITERAL;
   wire [ROM38_BANK_BITS-1:0] cfg_rom38_bank = 4 * CONSTANTS + NORMALISATION;
 
+`ifdef GATE_LEVEL
+  // The mapped netlist (scripts/silicon.sh, default widths) with the SDF delays; its ROM
+  // macros read their images themselves (scripts/silicon/rom_model.py).
+  initial $sdf_annotate(`SDF_FILE, dut);
+  specular_device dut (
+`else
   specular_device #(
     .COS_FRAC(COS_FRAC), .N_BITS(N_BITS), .RGB_BITS(RGB_BITS),
     .ROM5_ADDR_BITS(ROM5_ADDR_BITS), .ROM5_WORD_BITS(ROM5_WORD_BITS),
@@ -82,6 +96,7 @@ module specular_device_tb;
     .ROM38_INT(ROM38_INT), .ROM38_FRAC(ROM38_FRAC), .ROM38_BANK_BITS(ROM38_BANK_BITS),
     .NORM_INT(NORM_INT), .NORM_FRAC(NORM_FRAC), .OUT_INT(OUT_INT), .OUT_FRAC(OUT_FRAC),
     .ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
+`endif
     .pin17_cos(pin17_cos), .pin18_n(pin18_n), .pin19_h(pin19_h), .pin20_a(pin20_a),
     .pin21_r(pin21_r), .pin22_g(pin22_g), .pin23_b(pin23_b),
     .pin24_r(pin24_r), .pin25_g(pin25_g), .pin26_b(pin26_b),
@@ -161,8 +176,13 @@ module specular_device_tb;
     pass1_seen = pass1_seen + 1;
   end
 
+  // An edge `elapsed` after start is not `periods` periods after it (to EDGE_TOLERANCE).
+  function off_time(input real elapsed, input real periods);
+    off_time = elapsed < periods * T || elapsed > (periods + EDGE_TOLERANCE) * T;
+  endfunction
+
   always @(negedge pin35_done) if (monitoring) begin
-    if ($realtime - start_time[fall_seen] != 2 * T)
+    if (off_time($realtime - start_time[fall_seen], 2.0))
       $fatal(1, "specular_device_tb: 35 fell %f periods after start %0d (want 2)",
              ($realtime - start_time[fall_seen]) / T, fall_seen);
     fall_seen = fall_seen + 1;
@@ -170,7 +190,7 @@ module specular_device_tb;
 
   always @(posedge pin35_done) if (monitoring) begin
     if (done_seen >= started) $fatal(1, "specular_device_tb: 35 rose with no operation at %0t", $realtime);
-    if ($realtime - start_time[done_seen] != 2.5 * T)
+    if (off_time($realtime - start_time[done_seen], 2.5))
       $fatal(1, "specular_device_tb: 35 rose %f periods after start %0d (want 2.5)",
              ($realtime - start_time[done_seen]) / T, done_seen);
     if (obs_reg9_q !== v_pass2[done_seen]) mismatch(done_seen, "register 9 pass 2", obs_reg9_q, v_pass2[done_seen]);
@@ -180,6 +200,24 @@ module specular_device_tb;
     checks = checks + 5;
     done_seen = done_seen + 1;
   end
+
+`ifdef GATE_LEVEL
+  // Fig. 2's strobes with real delays (docs/silicon.md, hazards): pulses of strobe 37
+  // (high) and pin 35 (low) and the narrowest of each, against the DFFPOSX1's minimum
+  // pulse width that register 9 needs.
+  real    rise37 = -1.0, fall35 = -1.0, narrowest37 = 1.0e9, narrowest35 = 1.0e9;
+  integer pulses37 = 0, pulses35 = 0;
+  always @(posedge obs_write37) rise37 = $realtime;
+  always @(negedge obs_write37) if (rise37 >= 0) begin
+    pulses37 = pulses37 + 1;
+    if ($realtime - rise37 < narrowest37) narrowest37 = $realtime - rise37;
+  end
+  always @(negedge pin35_done) fall35 = $realtime;
+  always @(posedge pin35_done) if (fall35 >= 0) begin
+    pulses35 = pulses35 + 1;
+    if ($realtime - fall35 < narrowest35) narrowest35 = $realtime - fall35;
+  end
+`endif
 
   // ---- driver ----
   real     next_start, prev_start;
@@ -192,7 +230,7 @@ module specular_device_tb;
     real rising;
     begin
       rising = T / 2;
-      while (rising < now + T / 4) rising = rising + T;
+      while (rising < now + T / 4 + LOAD_SETUP * T) rising = rising + T;
       first_edge_after_quarter = rising;
     end
   endfunction
@@ -211,11 +249,14 @@ module specular_device_tb;
     begin
       reload = !loaded || v_n[index] != loaded_n || v_r[index] != loaded_r ||
                v_g[index] != loaded_g || v_b[index] != loaded_b;
-      #(at - T / 4 - $realtime);
-      pin17_cos = cos_code;
+      #(at - T / 4 - LOAD_SETUP * T - $realtime);
       if (reload) begin
         pin18_n = v_n[index];
         pin21_r = v_r[index]; pin22_g = v_g[index]; pin23_b = v_b[index];
+      end
+      #(LOAD_SETUP * T);
+      pin17_cos = cos_code;
+      if (reload) begin
         {pin30_load_n, pin31_load_r, pin32_load_g, pin33_load_b} = 4'b1111;
         loaded = 1;
         loaded_n = v_n[index]; loaded_r = v_r[index]; loaded_g = v_g[index]; loaded_b = v_b[index];
@@ -243,11 +284,11 @@ module specular_device_tb;
         begin
           #(phase * T / 4);
           pin29_reset_n = 0;
-          #(T / 100);
+          #(IDLE_WAIT * T);
           expect_idle("during");
-          #(T - T / 100);
+          #(T - IDLE_WAIT * T);
           pin29_reset_n = 1;
-          #(T / 100);
+          #(IDLE_WAIT * T);
           expect_idle("after");
         end
       join
@@ -257,13 +298,16 @@ module specular_device_tb;
     end
   endtask
 
-  // The widths derived above are the device's.
+  // The widths derived above are the device's. (A mapped netlist has no parameters
+  // left: scripts/silicon.sh maps the default widths, which the defaults above are.)
   task check_widths;
+`ifndef GATE_LEVEL
     if (COS_W != dut.COS_W || MUX4_W != dut.MUX4_W || REG9_W != dut.REG9_W ||
         ROM38_W != dut.ROM38_W || NORM_W != dut.NORM_W || OUT_W != dut.OUT_W)
       $fatal(1, "specular_device_tb: widths derived differently from the device's: COS %0d/%0d MUX4 %0d/%0d REG9 %0d/%0d ROM38 %0d/%0d NORM %0d/%0d OUT %0d/%0d",
              COS_W, dut.COS_W, MUX4_W, dut.MUX4_W, REG9_W, dut.REG9_W, ROM38_W, dut.ROM38_W,
              NORM_W, dut.NORM_W, OUT_W, dut.OUT_W);
+`endif
   endtask
 
   initial begin
@@ -275,7 +319,7 @@ module specular_device_tb;
     pin29_reset_n = 0;
     #(T);
     pin29_reset_n = 1;
-    #(T / 100);
+    #(IDLE_WAIT * T);
     expect_idle("after");
     monitoring = 1;
     prev_start = -10 * T;
@@ -304,6 +348,10 @@ module specular_device_tb;
     $display("specular_device_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s; widths COS U1.%0d, register 9 S%0d.%0d, ROM 5 word %0d bits",
              count, back_to_back, resets, checks, VECTORS, COS_FRAC, REG9_INT, REG9_FRAC,
              ROM5_WORD_BITS);
+`ifdef GATE_LEVEL
+    $display("specular_device_tb: strobes: 37 %0d pulses (narrowest %.3f ns), 35 %0d pulses (narrowest %.3f ns) for %0d operations and %0d aborted",
+             pulses37, narrowest37, pulses35, narrowest35, count, resets);
+`endif
     $finish;
   end
 

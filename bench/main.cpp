@@ -76,6 +76,14 @@ const std::vector<Model>& models() {
       {"rtl_cpp_stream",
        [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_cpp_stream", true); },
        8'000'000, 200'000, 3, "RTL twin as plain C++, n/RGB held per 256 results (2 T)"},
+      // The synchronous variant (rtl/specular_device_sync.v) as plain C++: the fast
+      // cycle model (docs/rtl.md).
+      {"rtl_sync_cpp",
+       [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_cpp", false); },
+       8'000'000, 200'000, 3, "synchronous RTL variant as plain C++ (RtlSyncCycleModel), random n/RGB (3 T)"},
+      {"rtl_sync_cpp_stream",
+       [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_cpp_stream", true); },
+       16'000'000, 200'000, 3, "synchronous RTL variant as plain C++, n/RGB held per 256 results (2 T)"},
       {"pin_vcd_on",
        [](const Plan& p) { measure_pin(p, "pin_vcd_on", false, Trace::vcd); },
        100'000, 4096, 1, "pin-level device as pin_vcd_off, every pin and net to VCD (specular_tb --vcd)"},
@@ -215,6 +223,10 @@ const std::vector<Target>& targets() {
       {"pin_vcd_off_vs_pow", true, 0.01, "pin-level device, new n/RGB every result (3 T), over std::pow"},
       // ... and beside it one material streaming at 2 T.
       {"pin_stream_vs_pow", true, 0.01, "pin-level device, n/RGB held per 256 results (2 T), over std::pow"},
+      // The synchronous variant's fast cycle model (issue 19): 0.25x std::pow and
+      // 10 M results/s, streaming one material.
+      {"rtl_sync_cpp_stream_vs_pow", true, 0.25, "synchronous RTL variant as plain C++, streaming (2 T), over std::pow"},
+      {"rtl_sync_cpp_stream_rate", true, 10.0, "synchronous RTL variant as plain C++, streaming (2 T), M results/s"},
       {"vcd_slowdown", false, 6.0, "pin-level device without VCD over with VCD (how much slower tracing is)"},
   };
    return all;

@@ -76,6 +76,7 @@ enum class Trace {
 enum class PinDevice {
   netlist,  ///< the SystemC netlist of Fig. 1–2 (PinHarness)
   rtl,      ///< the RTL twin, verilated (RtlHarness)
+  rtl_sync, ///< the synchronous variant, verilated (RtlSyncHarness, its own protocol)
   floor,    ///< FloorDevice: timing only, no arithmetic (the harness and kernel's floor)
 };
 /// A pin-level device under DeviceHarness. `stream`: n/RGB held per block.

@@ -64,6 +64,12 @@ const std::vector<Model>& models() {
       {"rtl_stream",
        [](const Plan& p) { measure_pin(p, "rtl_stream", true, Trace::off, PinDevice::rtl); },
        400'000, 8192, 1, "RTL twin under the pin harness, as pin_stream (2 T)"},
+      {"rtl_sync_vcd_off",
+       [](const Plan& p) { measure_pin(p, "rtl_sync_vcd_off", false, Trace::off, PinDevice::rtl_sync); },
+       400'000, 8192, 1, "synchronous RTL variant under the pin harness, as pin_vcd_off (3 T)"},
+      {"rtl_sync_stream",
+       [](const Plan& p) { measure_pin(p, "rtl_sync_stream", true, Trace::off, PinDevice::rtl_sync); },
+       400'000, 8192, 1, "synchronous RTL variant under the pin harness, as pin_stream (2 T)"},
       {"floor_vcd_off",
        [](const Plan& p) { measure_pin(p, "floor_vcd_off", false, Trace::off, PinDevice::floor); },
        400'000, 8192, 1, "the harness with a device that only keeps time (3 T): the floor"},
@@ -256,6 +262,10 @@ void add_ratios(Round& round, std::vector<std::string>& order) {
     add("rtl_vs_pin", rate("rtl_vcd_off") / rate("pin_vcd_off"), "x");
     add("floor_vs_pin", rate("floor_vcd_off") / rate("pin_vcd_off"), "x");
   }
+  if (rate("pin_vcd_off") > 0 && rate("rtl_sync_vcd_off") > 0)
+    add("rtl_sync_vs_pin", rate("rtl_sync_vcd_off") / rate("pin_vcd_off"), "x");
+  if (rate("pin_stream") > 0 && rate("rtl_sync_stream") > 0)
+    add("rtl_sync_stream_vs_pin_stream", rate("rtl_sync_stream") / rate("pin_stream"), "x");
   if (rate("pin_stream") > 0 && rate("rtl_stream") > 0) {
     add("rtl_stream_vs_pin_stream", rate("rtl_stream") / rate("pin_stream"), "x");
     add("floor_stream_vs_pin_stream", rate("floor_stream") / rate("pin_stream"), "x");

@@ -23,6 +23,9 @@ set -euo pipefail
 #                                       5.006 compiles it into C++ models, Icarus Verilog 11
 #                                       runs its Verilog testbench, Yosys 0.23 lints and
 #                                       synthesises it (scripts/synth.sh)
+#   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/silicon.sh, gatesim.sh,
+#                                       docs/silicon.md): the OSU 0.18 um standard cells
+#                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev
@@ -33,6 +36,7 @@ PACKAGES=(
   gnuplot-nox
   clang-14 libclang-rt-14-dev
   verilator iverilog yosys
+  qflow-tech-osu018 opensta bc
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

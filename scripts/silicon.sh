@@ -1,0 +1,151 @@
+#!/usr/bin/env bash
+# The device in silicon: rtl/ mapped onto the OSU 0.18 um standard cells (qflow-tech-osu018),
+# ROMs 5 and 38 as memory macros, static timing with OpenSTA, and (unless --no-gatesim)
+# T_sim from the gate-level simulation (scripts/gatesim.sh). docs/silicon.md explains it.
+#
+#   scripts/silicon.sh [--top NAME] [--no-gatesim] OUT_DIR [ROM_DIR]
+#
+#   --top NAME    the top module (default specular_device); its own pieces (SDC, named
+#                 paths, the control unit's expected cells, the testbench timing) live in
+#                 scripts/silicon/NAME/.
+#   --no-gatesim  skip the T_sim bisection (T_sim is then reported as not measured).
+#   ROM_DIR       rom5.hex, rom38.hex, pins.hex (default build/rtl/rom/default).
+#
+# OUT_DIR gets silicon_report.md, silicon_summary.json, the mapped netlist (mapped.v), the
+# SDC (constraints.sdc), the SDF (device.sdf), the ROM macros' Liberty (rom_macros.lib)
+# and the raw tool logs (yosys.log, sta.log, sta_*.txt, path_*.txt, gatesim/).
+# Exit status: 0 report written, 1 a tool failed, 2 bad arguments or a missing package.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(dirname "$here")"
+OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
+
+usage() {
+  sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+}
+
+top=specular_device
+gatesim=1
+args=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    -h|--help) usage; exit 0 ;;
+    --top) [[ $# -ge 2 ]] || { echo "silicon.sh: --top needs a module name" >&2; exit 2; }
+           top="$2"; shift 2 ;;
+    --top=*) top="${1#--top=}"; shift ;;
+    --no-gatesim) gatesim=0; shift ;;
+    -*) echo "silicon.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
+    *) args+=("$1"); shift ;;
+  esac
+done
+if [[ ${#args[@]} -lt 1 || ${#args[@]} -gt 2 ]]; then
+  echo "usage: scripts/silicon.sh [--top NAME] [--no-gatesim] OUT_DIR [ROM_DIR]  (--help)" >&2
+  exit 2
+fi
+top_dir="$here/silicon/$top"
+if [[ ! -f "$top_dir/constraints.tcl" ]]; then
+  echo "silicon.sh: top '$top' has no flow pieces (scripts/silicon/$top/constraints.tcl);" \
+       "known tops: $(cd "$here/silicon" && ls -d */ | tr -d / | tr '\n' ' ')" >&2
+  exit 2
+fi
+out="${args[0]}"
+rom_dir="${args[1]:-$root/build/rtl/rom/default}"
+
+# ---- what the flow needs, each named with its install line ------------------------
+need() {  # need FILE_OR_COMMAND PACKAGE
+  if [[ "$1" == /* ]]; then [[ -e "$1" ]] && return 0; else command -v "$1" >/dev/null && return 0; fi
+  echo "silicon.sh: $1 not found: sudo apt-get install $2 (or bash scripts/setup.sh)" >&2
+  exit 2
+}
+need "$OSU018/osu018_stdcells.lib" qflow-tech-osu018
+need "$OSU018/osu018_stdcells.v" qflow-tech-osu018
+need sta opensta
+need yosys yosys
+need /usr/bin/python3 python3
+need bc bc
+[[ -f "$here/gatesim.sh" ]] || gatesim=0  # first cut: gatesim.sh follows
+[[ $gatesim -eq 0 ]] || { need iverilog iverilog; need vvp iverilog; }
+for image in rom5.hex rom38.hex pins.hex; do
+  if [[ ! -f "$rom_dir/$image" ]]; then
+    echo "silicon.sh: '$rom_dir/$image' not found: build the ROM images first" \
+         "(cmake --build build --target specular_rom_images) or name their folder" >&2
+    exit 2
+  fi
+done
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+rom_dir="$(cd "$rom_dir" && pwd)"
+lib="$OSU018/osu018_stdcells.lib"
+seconds() { date +%s.%N; }
+t0=$(seconds)
+
+# ---- ROM macros: Liberty, blackboxes, behavioural models ----------------------------
+/usr/bin/python3 "$here/silicon/rom_model.py" "$out" || { echo "silicon.sh: rom_model.py failed" >&2; exit 1; }
+
+# ---- mapping (Yosys) ---------------------------------------------------------------
+# Hierarchy kept (area per block of Fig. 1); only Fig. 2's leaf gates are flattened into
+# control unit 16, where they are library cells already (silicon/fig2_cells.v).
+sources=()
+for f in "$root"/rtl/*.v; do sources+=("$f"); done
+script="read_liberty -lib $lib
+read_verilog $out/rom_macros_bb.v
+read_verilog ${sources[*]}
+read_verilog -overwrite $here/silicon/fig2_cells.v
+hierarchy -check -top $top
+setattr -mod -set keep_hierarchy 1 *
+setattr -mod -unset keep_hierarchy inverter and2 nand2 nand3 d_flip_flop
+flatten
+proc; opt; memory -nomap; opt
+techmap -map $here/silicon/rom_macro_map.v
+opt; wreduce; opt
+techmap; opt
+dfflibmap -liberty $lib
+abc -fast -liberty $lib
+opt_clean
+tee -q -o $out/stat.txt stat -liberty $lib
+write_verilog -noattr $out/mapped.v"
+if ! (cd "$rom_dir" && yosys -q -l "$out/yosys.log" -p "$script" >/dev/null 2>&1); then
+  echo "silicon.sh: yosys failed; see $out/yosys.log" >&2
+  exit 1
+fi
+if grep -q '\$mem' "$out/mapped.v"; then
+  echo "silicon.sh: a memory was left unmapped (not a ROM macro); see $out/mapped.v" >&2
+  exit 1
+fi
+t1=$(seconds)
+
+# ---- static timing (OpenSTA) --------------------------------------------------------
+{
+  echo "set lib {$lib}"
+  echo "set rom_lib {$out/rom_macros.lib}"
+  echo "set netlist {$out/mapped.v}"
+  echo "set top {$top}"
+  echo "set top_dir {$top_dir}"
+  echo "set out {$out}"
+  echo "source {$here/silicon/sta.tcl}"
+} > "$out/sta_run.tcl"
+if ! sta -no_splash -exit "$out/sta_run.tcl" > "$out/sta.log" 2>&1 || ! grep -q t_sta_ns "$out/sta_summary.txt" 2>/dev/null; then
+  echo "silicon.sh: sta failed; see $out/sta.log" >&2
+  exit 1
+fi
+t2=$(seconds)
+
+# ---- T_sim: gate-level simulation, bisection to 0.1 ns ------------------------------
+if [[ $gatesim -eq 1 ]]; then
+  t_sta=$(awk '/t_sta_ns/ {print $2}' "$out/sta_summary.txt")
+  if ! bash "$here/gatesim.sh" --top "$top" --netlist-dir "$out" --bisect "$t_sta" "$out/gatesim" "$rom_dir" \
+       > "$out/gatesim.log" 2>&1; then
+    echo "silicon.sh: the T_sim bisection failed; see $out/gatesim.log" >&2
+    exit 1
+  fi
+fi
+t3=$(seconds)
+printf 'mapping_s %.1f\nsta_s %.1f\ngatesim_s %.1f\n' "$(echo "$t1 - $t0" | bc)" \
+  "$(echo "$t2 - $t1" | bc)" "$(echo "$t3 - $t2" | bc)" > "$out/times.txt"
+
+# ---- the report --------------------------------------------------------------------
+if ! /usr/bin/python3 "$here/silicon/report.py" "$out" "$top" "$top_dir"; then
+  echo "silicon.sh: report.py failed" >&2
+  exit 1
+fi

@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""ROM 5 and ROM 38 as memory macros of the OSU 0.18 um flow (scripts/silicon.sh).
+
+No public area or access-time figure of a 0.18 um mask ROM (or ROM compiler) of these
+sizes could be found, so this is the issue's fallback, a first-principles model:
+  - the bit array: a contact-programmed NOR ROM cell, one NMOS per bit, of BIT_CELL_UM2
+    (8 x 8 lambda at the SCMOS SUBM rules' lambda = 0.1 um of the OSU library);
+  - the periphery as library cells at their Liberty areas: a NAND3X1 + INVX4 row driver
+    per row, a MUX2X1 tree (WAYS - 1 per output bit) as column multiplexer, a BUFX4 per
+    output, an INVX1 per column as precharge and sense;
+  - the access time as the sum of stated stages: decoder (DECODER_LEVELS gate delays),
+    word line (INVX8 driver into the gate capacitance of a row), bit line (cell current
+    into the bit line capacitance of a column down to the sense swing) and column
+    multiplexer + output buffer (MUX_LEVELS gate delays).
+The constants below are the whole model; docs/silicon.md quotes them.
+
+  rom_model.py OUT_DIR   writes rom_macros.lib (Liberty), rom_macros_bb.v (blackboxes for
+                         Yosys), rom_macros_sim.v (behavioural models with the access time
+                         for the gate-level simulation) and rom_model.json (the figures).
+"""
+import json
+import math
+import sys
+
+LAMBDA_UM = 0.1
+BIT_CELL_UM2 = (8 * LAMBDA_UM) * (8 * LAMBDA_UM)  # 0.64 um^2
+GATE_DELAY_NS = 0.2          # one library gate at fanout 4 (NAND3X1/INVX1 tables, ~0.15-0.25)
+DECODER_LEVELS = 3           # predecode NAND3, decode NAND3, word-line driver INVX8
+MUX_LEVELS = 3               # column pass gate, sense inverter, BUFX4
+DRIVER_KOHM = 1.5            # INVX8 output resistance
+WORDLINE_FF_PER_CELL = 1.0   # gate + metal-strapped poly per bit cell
+BITLINE_FF_PER_CELL = 0.5    # shared drain junction + metal per bit cell
+CELL_CURRENT_UA = 100.0      # a minimum NMOS at Vgs = 1.8 V
+SENSE_SWING_V = 0.3          # bit-line swing the sense inverter needs
+OUTPUT_KOHM = 1.0            # BUFX4 output resistance: delay per pF of load
+INPUT_PF = 0.02              # an address pin drives two NAND3 predecoder inputs
+AREA = {"NAND3X1": 36, "INVX4": 24, "INVX1": 16, "MUX2X1": 48, "BUFX4": 32}  # lib areas
+
+# name, words, width, address bits, column ways (words per row)
+MACROS = [
+    ("ROM5_MACRO", 32768, 22, 15, 32),
+    ("ROM38_MACRO", 16384, 25, 14, 32),       # the 16 banks rtl/rom38.v holds
+    ("ROM38_BANK_MACRO", 1024, 25, 10, 8),    # one bank: a device built for one policy
+]
+
+
+def model(name, words, width, abits, ways):
+    rows = words // ways
+    columns = ways * width
+    bits = words * width
+    array = bits * BIT_CELL_UM2
+    periphery = (rows * (AREA["NAND3X1"] + AREA["INVX4"])
+                 + width * (ways - 1) * AREA["MUX2X1"]
+                 + width * AREA["BUFX4"] + columns * AREA["INVX1"])
+    t_decoder = DECODER_LEVELS * GATE_DELAY_NS
+    t_wordline = 0.69 * DRIVER_KOHM * columns * WORDLINE_FF_PER_CELL * 1e-3  # kohm x pF = ns
+    t_bitline = rows * BITLINE_FF_PER_CELL * 1e-3 * SENSE_SWING_V / CELL_CURRENT_UA * 1e3  # pF V / uA = us
+    t_output = MUX_LEVELS * GATE_DELAY_NS
+    access = t_decoder + t_wordline + t_bitline + t_output
+    return {"name": name, "words": words, "width": width, "address_bits": abits,
+            "rows": rows, "columns": columns, "bits": bits,
+            "array_um2": round(array, 1), "periphery_um2": round(periphery, 1),
+            "area_um2": round(array + periphery, 1),
+            "t_decoder_ns": round(t_decoder, 3), "t_wordline_ns": round(t_wordline, 3),
+            "t_bitline_ns": round(t_bitline, 3), "t_output_ns": round(t_output, 3),
+            "access_ns": round(access, 3)}
+
+
+def liberty(models):
+    out = ["/* ROM macros of the specular device: first-principles model, scripts/silicon/rom_model.py */",
+           "library(specular_rom_macros) {",
+           "  delay_model : table_lookup;",
+           '  time_unit : "1ns"; voltage_unit : "1V"; current_unit : "1uA";',
+           '  pulling_resistance_unit : "1kohm"; leakage_power_unit : "1nW";',
+           "  capacitive_load_unit (1,pf);",
+           "  slew_upper_threshold_pct_rise : 80; slew_lower_threshold_pct_rise : 20;",
+           "  slew_upper_threshold_pct_fall : 80; slew_lower_threshold_pct_fall : 20;",
+           "  input_threshold_pct_rise : 50; input_threshold_pct_fall : 50;",
+           "  output_threshold_pct_rise : 50; output_threshold_pct_fall : 50;",
+           "  nom_process : 1; nom_voltage : 1.8; nom_temperature : 25;",
+           "  operating_conditions (typical) { process : 1; voltage : 1.8; temperature : 25; }",
+           "  default_operating_conditions : typical;",
+           "  lu_table_template(rom_load) { variable_1 : total_output_net_capacitance; index_1 (\"0.0, 1.0\"); }"]
+    widths = sorted({m["width"] for m in models} | {m["address_bits"] for m in models})
+    for w in widths:
+        out.append(f"  type (bus{w}) {{ base_type : array; data_type : bit; bit_width : {w}; "
+                   f"bit_from : {w - 1}; bit_to : 0; downto : true; }}")
+    for m in models:
+        t = m["access_ns"]
+        delay = f'index_1 ("0.0, 1.0"); values ("{t:.3f}, {t + OUTPUT_KOHM:.3f}");'
+        slew = f'index_1 ("0.0, 1.0"); values ("0.100, {0.1 + 2.2 * OUTPUT_KOHM:.3f}");'
+        out += [f"  cell ({m['name']}) {{",
+                f"    area : {m['area_um2']};",
+                "    dont_use : true;",
+                f"    bus (A) {{ bus_type : bus{m['address_bits']}; direction : input; capacitance : {INPUT_PF}; }}",
+                f"    bus (Q) {{ bus_type : bus{m['width']}; direction : output; max_capacitance : 1.0;"]
+        # One timing group per output bit, related to every address bit (a bus-to-bus
+        # timing group of unequal widths is refused by OpenSTA).
+        for bit in range(m["width"]):
+            out += [f"      pin (Q[{bit}]) {{",
+                    '        timing () { related_pin : "A"; timing_sense : non_unate;',
+                    f"          cell_rise (rom_load) {{ {delay} }}",
+                    f"          cell_fall (rom_load) {{ {delay} }}",
+                    f"          rise_transition (rom_load) {{ {slew} }}",
+                    f"          fall_transition (rom_load) {{ {slew} }}",
+                    "        }", "      }"]
+        out += ["    }", "  }"]
+    out.append("}")
+    return "\n".join(out) + "\n"
+
+
+def blackboxes(models):
+    out = ["// ROM macros as blackboxes for Yosys (scripts/silicon/rom_model.py)."]
+    for m in models:
+        out += ["(* blackbox *)",
+                f"module {m['name']} (input wire [{m['address_bits'] - 1}:0] A, "
+                f"output wire [{m['width'] - 1}:0] Q);", "endmodule"]
+    return "\n".join(out) + "\n"
+
+
+def behavioural(models):
+    out = ["// ROM macros for the gate-level simulation (scripts/gatesim.sh): the words of the",
+           "// image, valid the Liberty access time after the address settles (an inertial",
+           "// delay: an address held shorter than the access time never reaches Q).",
+           "`timescale 1ns / 10ps"]
+    images = {"ROM5_MACRO": "rom5.hex", "ROM38_MACRO": "rom38.hex", "ROM38_BANK_MACRO": "rom38.hex"}
+    for m in models:
+        if m["name"] not in images or m["name"] == "ROM38_BANK_MACRO":
+            continue  # one bank: area and timing only (the netlist holds all 16 banks)
+        a, w = m["address_bits"], m["width"]
+        out += [f"module {m['name']} (A, Q);",
+                f'  parameter IMAGE = "{images[m["name"]]}";',
+                f"  parameter real ACCESS = {m['access_ns']:.3f};",
+                f"  input wire [{a - 1}:0] A;",
+                f"  output wire [{w - 1}:0] Q;",
+                f"  reg [{w - 1}:0] words [0:{m['words'] - 1}];",
+                "  initial $readmemh(IMAGE, words);",
+                "  assign #(ACCESS) Q = words[A];",
+                "endmodule"]
+    return "\n".join(out) + "\n"
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.stderr.write("usage: rom_model.py OUT_DIR\n")
+        return 2
+    out = sys.argv[1]
+    models = [model(*m) for m in MACROS]
+    with open(f"{out}/rom_macros.lib", "w") as f:
+        f.write(liberty(models))
+    with open(f"{out}/rom_macros_bb.v", "w") as f:
+        f.write(blackboxes(models))
+    with open(f"{out}/rom_macros_sim.v", "w") as f:
+        f.write(behavioural(models))
+    constants = {k: v for k, v in globals().items() if k.isupper() and k not in ("AREA", "MACROS")}
+    with open(f"{out}/rom_model.json", "w") as f:
+        json.dump({"constants": constants, "macros": models}, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -364,8 +364,11 @@ int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& 
     const Spread s = spread_of(values);
     const Verdict v = judge(s, t.at_least, t.bound);
     count.add(v);
-    std::printf("target_%s: %s (%.4g x [%.4g..%.4g], bound %s %g x: %s)\n", t.figure.c_str(), to_string(v),
-                s.median, s.min, s.max, t.at_least ? ">=" : "<=", t.bound, t.what.c_str());
+    // In the figure's own unit: ratios are "x", rates "Mresults/s".
+    const char* unit = it->second.front().unit.c_str();
+    std::printf("target_%s: %s (%.4g %s [%.4g..%.4g], bound %s %g %s: %s)\n", t.figure.c_str(),
+                to_string(v), s.median, unit, s.min, s.max, t.at_least ? ">=" : "<=", t.bound, unit,
+                t.what.c_str());
   }
   std::printf("targets_met: %d of %d (%d not met, %d within noise)\n", count.met, count.total(),
               count.not_met, count.within_noise);

@@ -14,7 +14,9 @@
 //     held low one period) at a quarter-period phase cycling through the operation;
 //     after the clock edge inside the reset and after its release 35 must be high and
 //     the sequencer idle (pass 1 = select 36 = write 37 = 0), and the next operation
-//     correct.
+//     correct;
+//   - misuse, first: a start held over the edge that ends pass 1 is ignored (register 1
+//     keeps its operation's cos λ, 35 rises once, no second operation follows).
 // Stops with $fatal (non-zero exit) on the first mismatch. The policy reaches the
 // device as the twin's wrapper ties it: pins 19, 20 (CONSTANTS) and the configuration
 // inputs cfg_rom38_bank (4 * CONSTANTS + NORMALISATION) and cfg_literal (LITERAL).
@@ -248,6 +250,30 @@ module specular_device_sync_tb;
     end
   endtask
 
+  // A start still high at the edge that ends pass 1, with another cos λ on pin 17: the
+  // sequencer ignores it (docs/rtl.md).
+  task start_in_pass1_ignored;
+    real first;
+    begin
+      first = first_edge_after_quarter($realtime);
+      #(first - T / 4 - $realtime);
+      pin17_cos = 17'h00123;
+      pin27_start = 1;
+      #(T / 2);               // T/4 after the start edge: another cos, start still high
+      pin17_cos = 17'h04567;
+      #(T);                   // T/4 after the edge that ends pass 1
+      pin27_start = 0;
+      if (obs_reg1_q !== 17'h00123 || obs_select36 !== 1'b1 || obs_pass1 !== 1'b0)
+        $fatal(1, "specular_device_sync_tb: a start in pass 1 was not ignored: register 1 %h, 36=%b pass1=%b at %0t",
+               obs_reg1_q, obs_select36, obs_pass1, $realtime);
+      #(T);
+      if (pin35_done !== 1'b1) $fatal(1, "specular_device_sync_tb: 35 not high 2 T after the start at %0t", $realtime);
+      expect_idle("after a start in pass 1:");
+      #(2 * T);
+      expect_idle("after a start in pass 1:");
+    end
+  endtask
+
   initial begin
     read_vectors;
     loaded = 0;
@@ -258,6 +284,7 @@ module specular_device_sync_tb;
     pin29_reset_n = 1;
     #(T / 100);
     expect_idle("after");
+    start_in_pass1_ignored;
     monitoring = 1;
     prev_start = -10 * T;
     for (i = 0; i < count; i = i + 1) begin

@@ -64,7 +64,6 @@ need sta opensta
 need yosys yosys
 need /usr/bin/python3 python3
 need bc bc
-[[ -f "$here/gatesim.sh" ]] || gatesim=0  # first cut: gatesim.sh follows
 [[ $gatesim -eq 0 ]] || { need iverilog iverilog; need vvp iverilog; }
 for image in rom5.hex rom38.hex pins.hex; do
   if [[ ! -f "$rom_dir/$image" ]]; then

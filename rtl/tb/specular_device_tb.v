@@ -29,6 +29,14 @@ module specular_device_tb;
   parameter real T = 10.0;      // clock period (ns)
   parameter RESET_EVERY = 17;
   parameter MAX_VECTORS = 8192;
+  // Gate level (scripts/gatesim.sh, `define GATE_LEVEL): 35's edges come a gate delay
+  // after the clock's, so their time is checked to EDGE_TOLERANCE periods (0: exactly),
+  // and the control unit is checked idle IDLE_WAIT periods after reset moves.
+  parameter real EDGE_TOLERANCE = 0.0;
+  parameter real IDLE_WAIT = 0.01;
+  // Data of pins 18, 21-23 LOAD_SETUP periods before their strobes 30-33 rise (0: with
+  // them, as the zero-delay models allow; a flip-flop with setup time needs more).
+  parameter real LOAD_SETUP = 0.0;
 
   // Default widths (docs/design.md), as specular_tb uses them.
   localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 8;
@@ -58,7 +66,14 @@ module specular_device_tb;
   wire               cfg_literal = LITERAL;
   wire [BANK_BITS-1:0] cfg_rom38_bank = 4 * CONSTANTS + NORMALISATION;
 
+`ifdef GATE_LEVEL
+  // The mapped netlist (scripts/silicon.sh) with the SDF delays; its ROM macros read
+  // their images themselves (scripts/silicon/rom_model.py).
+  initial $sdf_annotate(`SDF_FILE, dut);
+  specular_device dut (
+`else
   specular_device #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
+`endif
     .pin17_cos(pin17_cos), .pin18_n(pin18_n), .pin19_h(pin19_h), .pin20_a(pin20_a),
     .pin21_r(pin21_r), .pin22_g(pin22_g), .pin23_b(pin23_b),
     .pin24_r(pin24_r), .pin25_g(pin25_g), .pin26_b(pin26_b),
@@ -138,8 +153,13 @@ module specular_device_tb;
     pass1_seen = pass1_seen + 1;
   end
 
+  // An edge `elapsed` after start is not `periods` periods after it (to EDGE_TOLERANCE).
+  function off_time(input real elapsed, input real periods);
+    off_time = elapsed < periods * T || elapsed > (periods + EDGE_TOLERANCE) * T;
+  endfunction
+
   always @(negedge pin35_done) if (monitoring) begin
-    if ($realtime - start_time[fall_seen] != 2 * T)
+    if (off_time($realtime - start_time[fall_seen], 2.0))
       $fatal(1, "specular_device_tb: 35 fell %f periods after start %0d (want 2)",
              ($realtime - start_time[fall_seen]) / T, fall_seen);
     fall_seen = fall_seen + 1;
@@ -147,7 +167,7 @@ module specular_device_tb;
 
   always @(posedge pin35_done) if (monitoring) begin
     if (done_seen >= started) $fatal(1, "specular_device_tb: 35 rose with no operation at %0t", $realtime);
-    if ($realtime - start_time[done_seen] != 2.5 * T)
+    if (off_time($realtime - start_time[done_seen], 2.5))
       $fatal(1, "specular_device_tb: 35 rose %f periods after start %0d (want 2.5)",
              ($realtime - start_time[done_seen]) / T, done_seen);
     if (obs_reg9_q !== v_pass2[done_seen]) mismatch(done_seen, "register 9 pass 2", obs_reg9_q, v_pass2[done_seen]);
@@ -169,7 +189,7 @@ module specular_device_tb;
     real rising;
     begin
       rising = T / 2;
-      while (rising < now + T / 4) rising = rising + T;
+      while (rising < now + T / 4 + LOAD_SETUP * T) rising = rising + T;
       first_edge_after_quarter = rising;
     end
   endfunction
@@ -188,11 +208,14 @@ module specular_device_tb;
     begin
       reload = !loaded || v_n[index] != loaded_n || v_r[index] != loaded_r ||
                v_g[index] != loaded_g || v_b[index] != loaded_b;
-      #(at - T / 4 - $realtime);
-      pin17_cos = cos_code;
+      #(at - T / 4 - LOAD_SETUP * T - $realtime);
       if (reload) begin
         pin18_n = v_n[index];
         pin21_r = v_r[index]; pin22_g = v_g[index]; pin23_b = v_b[index];
+      end
+      #(LOAD_SETUP * T);
+      pin17_cos = cos_code;
+      if (reload) begin
         {pin30_load_n, pin31_load_r, pin32_load_g, pin33_load_b} = 4'b1111;
         loaded = 1;
         loaded_n = v_n[index]; loaded_r = v_r[index]; loaded_g = v_g[index]; loaded_b = v_b[index];
@@ -220,11 +243,11 @@ module specular_device_tb;
         begin
           #(phase * T / 4);
           pin29_reset_n = 0;
-          #(T / 100);
+          #(IDLE_WAIT * T);
           expect_idle("during");
-          #(T - T / 100);
+          #(T - IDLE_WAIT * T);
           pin29_reset_n = 1;
-          #(T / 100);
+          #(IDLE_WAIT * T);
           expect_idle("after");
         end
       join
@@ -242,7 +265,7 @@ module specular_device_tb;
     pin29_reset_n = 0;
     #(T);
     pin29_reset_n = 1;
-    #(T / 100);
+    #(IDLE_WAIT * T);
     expect_idle("after");
     monitoring = 1;
     prev_start = -10 * T;

@@ -1,0 +1,9 @@
+# silicon_flow (ctest fixture): scripts/silicon.sh --no-gatesim maps the device onto the
+# OSU 0.18 um cells and runs OpenSTA once; the silicon_* tests read its folder.
+file(REMOVE_RECURSE ${OUT})
+execute_process(COMMAND bash ${SILICON} --no-gatesim ${OUT} ${ROM_DIR}
+                RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
+message(STATUS "${log}")
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "scripts/silicon.sh failed (status ${status})")
+endif()

@@ -186,6 +186,39 @@ module specular_device_sync_tb;
     done_seen = done_seen + 1;
   end
 
+`ifdef GATE_LEVEL
+  // Hazard watch at gate level: every transition of pin 35, select 36 and write 37 and
+  // the narrowest interval between two transitions of each (a glitch shows as an
+  // interval far below T/2; Icarus's cell delays are inertial, so a pulse narrower than
+  // the driving cell's delay is filtered as silicon would mostly filter it).
+  integer edges35 = 0, edges36 = 0, edges37 = 0;
+  real last35 = -1.0, last36 = -1.0, last37 = -1.0;
+  real narrowest35 = 1.0e9, narrowest36 = 1.0e9, narrowest37 = 1.0e9;
+  always @(pin35_done) if (pin29_reset_n === 1'b1) begin
+    if (last35 >= 0 && $realtime - last35 < narrowest35) narrowest35 = $realtime - last35;
+    last35 = $realtime;
+    edges35 = edges35 + 1;
+  end
+  always @(obs_select36) if (pin29_reset_n === 1'b1) begin
+    if (last36 >= 0 && $realtime - last36 < narrowest36) narrowest36 = $realtime - last36;
+    last36 = $realtime;
+    edges36 = edges36 + 1;
+  end
+  always @(obs_write37) if (pin29_reset_n === 1'b1) begin
+    if (last37 >= 0 && $realtime - last37 < narrowest37) narrowest37 = $realtime - last37;
+    last37 = $realtime;
+    edges37 = edges37 + 1;
+  end
+  task report_pulses;
+    $display("specular_device_sync_tb: gate-level transitions: 35 %0d (narrowest interval %f ns), select 36 %0d (%f ns), write 37 %0d (%f ns), T %f ns",
+             edges35, narrowest35, edges36, narrowest36, edges37, narrowest37, T);
+  endtask
+`else
+  task report_pulses;
+    ;
+  endtask
+`endif
+
   // ---- driver ----
   real     next_start, prev_start;
   integer  i, resets = 0, back_to_back = 0;
@@ -326,6 +359,7 @@ module specular_device_sync_tb;
     if (done_seen != count || pass1_seen != count || fall_seen != count)
       $fatal(1, "specular_device_sync_tb: %0d operations, %0d pass-1 writes, %0d results",
              count, pass1_seen, done_seen);
+    report_pulses;
     $display("specular_device_sync_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s",
              count, back_to_back, resets, checks, VECTORS);
     $finish;

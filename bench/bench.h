@@ -76,6 +76,7 @@ enum class Trace {
 enum class PinDevice {
   netlist,  ///< the SystemC netlist of Fig. 1–2 (PinHarness)
   rtl,      ///< the RTL twin, verilated (RtlHarness)
+  rtl_sync, ///< the synchronous variant, verilated (RtlSyncHarness, its own protocol)
   floor,    ///< FloorDevice: timing only, no arithmetic (the harness and kernel's floor)
 };
 /// A pin-level device under DeviceHarness. `stream`: n/RGB held per block.
@@ -83,6 +84,8 @@ void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace t
                  PinDevice device = PinDevice::netlist);
 /// The RTL twin as plain C++ (RtlCycleModel), clocked without the kernel.
 void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream);
+/// The synchronous variant as plain C++ (RtlSyncCycleModel): the fast cycle model.
+void measure_rtl_sync_cycle_model(const Plan& plan, const std::string& name, bool stream);
 
 /// How a TLM model is driven (SpecularDriver over a simple_initiator_socket).
 struct TlmOptions {

@@ -64,6 +64,12 @@ const std::vector<Model>& models() {
       {"rtl_stream",
        [](const Plan& p) { measure_pin(p, "rtl_stream", true, Trace::off, PinDevice::rtl); },
        400'000, 8192, 1, "RTL twin under the pin harness, as pin_stream (2 T)"},
+      {"rtl_sync_vcd_off",
+       [](const Plan& p) { measure_pin(p, "rtl_sync_vcd_off", false, Trace::off, PinDevice::rtl_sync); },
+       400'000, 8192, 1, "synchronous RTL variant under the pin harness, as pin_vcd_off (3 T)"},
+      {"rtl_sync_stream",
+       [](const Plan& p) { measure_pin(p, "rtl_sync_stream", true, Trace::off, PinDevice::rtl_sync); },
+       400'000, 8192, 1, "synchronous RTL variant under the pin harness, as pin_stream (2 T)"},
       {"floor_vcd_off",
        [](const Plan& p) { measure_pin(p, "floor_vcd_off", false, Trace::off, PinDevice::floor); },
        400'000, 8192, 1, "the harness with a device that only keeps time (3 T): the floor"},
@@ -76,6 +82,14 @@ const std::vector<Model>& models() {
       {"rtl_cpp_stream",
        [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_cpp_stream", true); },
        8'000'000, 200'000, 3, "RTL twin as plain C++, n/RGB held per 256 results (2 T)"},
+      // The synchronous variant (rtl/specular_device_sync.v) as plain C++: the fast
+      // cycle model (docs/rtl.md).
+      {"rtl_sync_cpp",
+       [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_cpp", false); },
+       8'000'000, 200'000, 3, "synchronous RTL variant as plain C++ (RtlSyncCycleModel), random n/RGB (3 T)"},
+      {"rtl_sync_cpp_stream",
+       [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_cpp_stream", true); },
+       16'000'000, 200'000, 3, "synchronous RTL variant as plain C++, n/RGB held per 256 results (2 T)"},
       {"pin_vcd_on",
        [](const Plan& p) { measure_pin(p, "pin_vcd_on", false, Trace::vcd); },
        100'000, 4096, 1, "pin-level device as pin_vcd_off, every pin and net to VCD (specular_tb --vcd)"},
@@ -215,6 +229,10 @@ const std::vector<Target>& targets() {
       {"pin_vcd_off_vs_pow", true, 0.01, "pin-level device, new n/RGB every result (3 T), over std::pow"},
       // ... and beside it one material streaming at 2 T.
       {"pin_stream_vs_pow", true, 0.01, "pin-level device, n/RGB held per 256 results (2 T), over std::pow"},
+      // The synchronous variant's fast cycle model (issue 19): 0.25x std::pow and
+      // 10 M results/s, streaming one material.
+      {"rtl_sync_cpp_stream_vs_pow", true, 0.25, "synchronous RTL variant as plain C++, streaming (2 T), over std::pow"},
+      {"rtl_sync_cpp_stream_rate", true, 10.0, "synchronous RTL variant as plain C++, streaming (2 T), M results/s"},
       {"vcd_slowdown", false, 6.0, "pin-level device without VCD over with VCD (how much slower tracing is)"},
   };
    return all;
@@ -244,6 +262,10 @@ void add_ratios(Round& round, std::vector<std::string>& order) {
     add("rtl_vs_pin", rate("rtl_vcd_off") / rate("pin_vcd_off"), "x");
     add("floor_vs_pin", rate("floor_vcd_off") / rate("pin_vcd_off"), "x");
   }
+  if (rate("pin_vcd_off") > 0 && rate("rtl_sync_vcd_off") > 0)
+    add("rtl_sync_vs_pin", rate("rtl_sync_vcd_off") / rate("pin_vcd_off"), "x");
+  if (rate("pin_stream") > 0 && rate("rtl_sync_stream") > 0)
+    add("rtl_sync_stream_vs_pin_stream", rate("rtl_sync_stream") / rate("pin_stream"), "x");
   if (rate("pin_stream") > 0 && rate("rtl_stream") > 0) {
     add("rtl_stream_vs_pin_stream", rate("rtl_stream") / rate("pin_stream"), "x");
     add("floor_stream_vs_pin_stream", rate("floor_stream") / rate("pin_stream"), "x");
@@ -342,8 +364,11 @@ int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& 
     const Spread s = spread_of(values);
     const Verdict v = judge(s, t.at_least, t.bound);
     count.add(v);
-    std::printf("target_%s: %s (%.4g x [%.4g..%.4g], bound %s %g x: %s)\n", t.figure.c_str(), to_string(v),
-                s.median, s.min, s.max, t.at_least ? ">=" : "<=", t.bound, t.what.c_str());
+    // In the figure's own unit: ratios are "x", rates "Mresults/s".
+    const char* unit = it->second.front().unit.c_str();
+    std::printf("target_%s: %s (%.4g %s [%.4g..%.4g], bound %s %g %s: %s)\n", t.figure.c_str(),
+                to_string(v), s.median, unit, s.min, s.max, t.at_least ? ">=" : "<=", t.bound, unit,
+                t.what.c_str());
   }
   std::printf("targets_met: %d of %d (%d not met, %d within noise)\n", count.met, count.total(),
               count.not_met, count.within_noise);

@@ -10,6 +10,7 @@
 #include "floor_device.h"
 #include "specular/pin_harness.h"
 #include "specular/twin/rtl_device.h"
+#include "specular/twin/rtl_sync_device.h"
 
 namespace specular_bench {
 
@@ -78,7 +79,8 @@ void measure_with(const Plan& plan, const std::string& name, bool stream, Trace 
   const bool vcd = trace != Trace::off;
   PinBench<Harness> bench("bench", plan, stream, trace == Trace::vcd_real_views);
   sc_core::sc_trace_file* file = nullptr;
-  if constexpr (std::is_same_v<Harness, specular::RtlHarness>) {
+  if constexpr (std::is_same_v<Harness, specular::RtlHarness> ||
+                std::is_same_v<Harness, specular::RtlSyncHarness>) {
     if (vcd) bench.harness.dut.open_vcd(plan.vcd_path + ".vcd");  // Verilator's writer
   } else if (vcd) {
     file = sc_core::sc_create_vcd_trace_file(plan.vcd_path.c_str());  // appends ".vcd"
@@ -110,6 +112,8 @@ void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace t
   switch (device) {
     case PinDevice::netlist: return measure_with<specular::PinHarness>(plan, name, stream, trace);
     case PinDevice::rtl: return measure_with<specular::RtlHarness>(plan, name, stream, trace);
+    case PinDevice::rtl_sync:
+      return measure_with<specular::RtlSyncHarness>(plan, name, stream, trace);
     case PinDevice::floor:
       return measure_with<specular::DeviceHarness<FloorDevice>>(plan, name, stream, trace);
   }

@@ -183,12 +183,13 @@ Options parse_options(const std::vector<std::string>& args) {
     throw UsageError("--rgb applies to --cos/--n and --sweep only (the file or the random draw gives R, G, B)");
   if (seen.count("--seed") && o.stimulus != StimulusKind::random)
     throw UsageError("--seed applies to --random N only");
-  if (!o.vcd_path.empty() && o.model != Model::pin && o.model != Model::rtl)
-    throw UsageError("--vcd needs --model pin or rtl (the " + std::string(to_string(o.model)) +
+  if (!o.vcd_path.empty() && !pin_level(o.model))
+    throw UsageError("--vcd needs --model pin, rtl or rtl-sync (the " + std::string(to_string(o.model)) +
                      " model has no signals to trace)");
-  if (o.real_views && o.model == Model::rtl)
-    throw UsageError("--real-views needs --model pin (the rtl model's VCD is Verilator's, of "
-                     "the RTL's own nets as codes: waveforms/specular_rtl.gtkw shows them as reals)");
+  if (o.real_views && (o.model == Model::rtl || o.model == Model::rtl_sync))
+    throw UsageError("--real-views needs --model pin (the " + std::string(to_string(o.model)) +
+                     " model's VCD is Verilator's, of the RTL's own nets as codes: "
+                     "waveforms/specular_rtl.gtkw and specular_rtl_sync.gtkw show them as reals)");
   if (o.real_views && o.vcd_path.empty())
     throw UsageError("--real-views needs --vcd FILE (the views exist only in a trace)");
   if (!o.vcd_path.empty() && !o.output_path.empty() && o.vcd_path == o.output_path)
@@ -240,11 +241,15 @@ Stimulus values:
   with a 64-bit Mersenne Twister; a seed gives the same draws on every platform.
 
 Model and device:
-  --model pin|core|tlm|rtl  pin (default): the pin-level SystemC netlist, driven on
+  --model pin|core|tlm|rtl|rtl-sync
+                            pin (default): the pin-level SystemC netlist, driven on
                             pins 17-35 (reset 29, load registers, start on 27, read
                             24-26 at the rising edge of 35); cycles are measured.
                             rtl: the RTL twin (rtl/*.v verilated into SystemC) under
                             the same harness, protocol checker and options as pin.
+                            rtl-sync: the synchronous variant (one clock, start and
+                            loads sampled at its rising edge; docs/rtl.md) under the
+                            same harness with its protocol; cycles must be 2.
                             core: the kernel-free bit-accurate core (same arithmetic,
                             no kernel, much faster); its cycles column is the spec's
                             2.5 periods, the model's annotated latency, not a measurement.
@@ -280,7 +285,8 @@ Output:
                             as real numbers (GTKWave's fixed-point display). A sweep's
                             VCD is huge: trace a point, a file or a short --random run.
                             rtl model: Verilator's VCD of the RTL's own nets, named by
-                            reference number; open it with waveforms/specular_rtl.gtkw.
+                            reference number; open it with waveforms/specular_rtl.gtkw
+                            (rtl-sync: waveforms/specular_rtl_sync.gtkw).
   --real-views              with --vcd: also trace cos, register 9, K(n), K*A and pins
                             24-26 as real-valued *_real variables, for viewers that
                             cannot show a bus as fixed point (about 1.3x the trace time)

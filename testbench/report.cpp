@@ -64,7 +64,7 @@ std::string header_line(const RunDescription& run) {
   s << "model " << run.model << ", normalisation " << to_string(run.config.normalisation)
     << ", saturation " << to_string(run.config.saturation) << ", constants "
     << to_string(run.config.constants);
-  if (run.model == "pin" || run.model == "rtl") s << ", clock " << clock_text(run.clock_period_ps);
+  if (run.model == "pin" || run.model == "rtl" || run.model == "rtl-sync") s << ", clock " << clock_text(run.clock_period_ps);
   s << ", " << run.operations << " computation(s) from " << run.stimulus;
   return s.str();
 }

@@ -10,6 +10,7 @@
 #include "specular/pin_harness.h"
 #ifdef SPECULAR_HAS_RTL_TWIN
 #include "specular/twin/rtl_device.h"
+#include "specular/twin/rtl_sync_device.h"
 #endif
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
@@ -24,11 +25,20 @@ const char* to_string(Model model) {
     case Model::core: return "core";
     case Model::tlm: return "tlm";
     case Model::rtl: return "rtl";
+    case Model::rtl_sync: return "rtl-sync";
   }
   return "?";
 }
 
-std::string model_names() { return "pin, core, tlm, rtl"; }
+std::string model_names() { return "pin, core, tlm, rtl, rtl-sync"; }
+
+bool pin_level(Model model) {
+  return model == Model::pin || model == Model::rtl || model == Model::rtl_sync;
+}
+
+double latency_cycles(Model model) {
+  return model == Model::rtl_sync ? sync_latency_cycles : spec_latency_cycles;
+}
 
 Model parse_model(const std::string& text) {
   if (text == "pin") return Model::pin;
@@ -36,9 +46,10 @@ Model parse_model(const std::string& text) {
   if (text == "tlm") return Model::tlm;
 #ifdef SPECULAR_HAS_RTL_TWIN
   if (text == "rtl") return Model::rtl;
+  if (text == "rtl-sync") return Model::rtl_sync;
 #else
-  if (text == "rtl")
-    throw UsageError("--model rtl: this specular_tb was built without the RTL twin "
+  if (text == "rtl" || text == "rtl-sync")
+    throw UsageError("--model " + text + ": this specular_tb was built without the RTL twin "
                      "(configured with -DSPECULAR_BUILD_RTL=OFF); the choices here: pin, core, tlm");
 #endif
   throw UsageError("--model = '" + text + "' is not one of: " + model_names());
@@ -110,7 +121,7 @@ void run_on_pins(const RunSettings& settings, const OperandSource& source,
   PinDriver<Harness> driver("driver", harness, source, sink, settings.chunk_size);
 #ifdef SPECULAR_HAS_RTL_TWIN
   // The twin's waveform is Verilator's own, of the RTL's nets (waveforms/specular_rtl.gtkw).
-  if constexpr (std::is_same_v<Harness, RtlHarness>) {
+  if constexpr (std::is_same_v<Harness, RtlHarness> || std::is_same_v<Harness, RtlSyncHarness>) {
     if (tracing) harness.dut.open_vcd(settings.vcd_base + ".vcd");
     sc_core::sc_start();
     if (driver.failure) std::rethrow_exception(driver.failure);
@@ -222,6 +233,13 @@ void run_operations(const RunSettings& settings, const OperandSource& source,
       return run_on_pins<RtlHarness>(settings, source, sink);
 #else
       throw UsageError("--model rtl: this specular_tb was built without the RTL twin "
+                       "(configured with -DSPECULAR_BUILD_RTL=OFF)");
+#endif
+    case Model::rtl_sync:
+#ifdef SPECULAR_HAS_RTL_TWIN
+      return run_on_pins<RtlSyncHarness>(settings, source, sink);
+#else
+      throw UsageError("--model rtl-sync: this specular_tb was built without the RTL twin "
                        "(configured with -DSPECULAR_BUILD_RTL=OFF)");
 #endif
     case Model::core: return run_core_model(settings, source, sink);

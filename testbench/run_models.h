@@ -20,17 +20,24 @@ enum class Model {
   core,  ///< the kernel-free bit-accurate core; latency annotated from the spec
   tlm,   ///< the TLM-2.0 `lt` target through its registers; cycles = its annotation
   rtl,   ///< the verilated RTL twin (rtl/, twin/) driven through the same harness as `pin`
+  rtl_sync,  ///< the synchronous variant (rtl/specular_device_sync.v), its own protocol
 };
 
 const char* to_string(Model model);
-/// "pin", "core", "tlm" or "rtl"; throws UsageError naming the value and the choices.
+/// "pin", "core", "tlm", "rtl" or "rtl-sync"; throws UsageError naming the value and the choices.
 Model parse_model(const std::string& text);
-/// "pin, core, tlm, rtl": the choices, for messages and --help.
+/// "pin, core, tlm, rtl, rtl-sync": the choices, for messages and --help.
 std::string model_names();
+/// Whether the model runs on pins 17–35 under DeviceHarness (pin, rtl, rtl-sync).
+bool pin_level(Model model);
 
 /// The spec's timing table: start → rising edge of 35 in clock periods. The core
 /// model has no clock; it reports this as its annotated latency.
 constexpr double spec_latency_cycles = 2.5;
+/// The synchronous variant's timing table (docs/rtl.md): start edge → 35↑.
+constexpr double sync_latency_cycles = 2.0;
+/// The latency a model must show: sync_latency_cycles for rtl-sync, else the spec's.
+double latency_cycles(Model model);
 
 /// How to run: which model, the device's configuration, the clock, tracing.
 struct RunSettings {

@@ -7,6 +7,7 @@
 
 #include "input.h"
 #include "specular/core.h"
+#include "run_models.h"
 #include "specular/reference.h"
 
 namespace specular {
@@ -52,7 +53,9 @@ struct Summary {
 
 class Scoreboard {
  public:
-  explicit Scoreboard(const Config& config);
+  /// `latency_cycles`: start → 35↑ a result must show (the spec's 2.5 T by default;
+  /// the synchronous variant's 2 T, latency_cycles(Model::rtl_sync)).
+  explicit Scoreboard(const Config& config, double latency_cycles = spec_latency_cycles);
   /// Compares one result with the reference (does not record it).
   Comparison compare(const Stimulus& stimulus, const Result& result, double cycles) const;
   /// Adds a comparison to the summary.
@@ -64,6 +67,7 @@ class Scoreboard {
  private:
   Config config_;
   Formats formats_;
+  double latency_cycles_;
   Summary summary_;
 };
 

@@ -92,7 +92,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   description.text_rows = o.stimulus != StimulusKind::sweep;
   report->begin(description);
 
-  Scoreboard scoreboard(o.config);
+  Scoreboard scoreboard(o.config, latency_cycles(settings.model));
   std::vector<Stimulus> stimuli;  // the chunk in flight, aligned with its operands
   const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
     chunk.clear();
@@ -100,8 +100,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
       // The pin model stops the kernel at the last rising edge of 35, before SystemC
       // writes that instant to the VCD: one more clock period (this runs in the pin
       // driver's thread) puts the last result's 35↑ into the waveform.
-      if ((settings.model == Model::pin || settings.model == Model::rtl) &&
-          !settings.vcd_base.empty())
+      if (pin_level(settings.model) && !settings.vcd_base.empty())
         sc_core::wait(sc_core::sc_time(static_cast<double>(o.clock_period_ps), sc_core::SC_PS));
       return false;
     }

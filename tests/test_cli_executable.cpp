@@ -223,7 +223,7 @@ std::vector<BadCase> bad_cases() {
       {"stray_word", "--cos 1 --n 3 extra", {"unknown option", "'extra'"}, {}},
       {"bad_policy", "--cos 1 --n 3 --policy phong", {"'phong'", "patent, energy, none"}, {}},
       {"bad_saturation", "--cos 1 --n 3 --saturation wrap", {"'wrap'", "clamp, literal"}, {}},
-      {"bad_model", "--cos 1 --n 3 --model gates", {"'gates'", "pin, core, tlm, rtl"}, {}},
+      {"bad_model", "--cos 1 --n 3 --model gates", {"'gates'", "pin, core, tlm, rtl, rtl-sync"}, {}},
       {"bad_format", "--cos 1 --n 3 --format xml", {"'xml'", "text, csv, json"}, {}},
       {"bad_clock", "--cos 1 --n 3 --clock-period 10ps", {"'10ps'", "multiple of 4 ps"}, {}},
       {"random_zero", "--random 0", {"N = 0", "[1, 100000000]"}, {}},

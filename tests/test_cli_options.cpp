@@ -133,7 +133,7 @@ TEST(CliOptions, UnknownOptionsAndMissingValues) {
 }
 
 TEST(CliOptions, ChoicesNameTheAllowedValues) {
-  expect_error({"--sweep", "--model", "gates"}, {"--model", "'gates'", "pin, core, tlm, rtl"});
+  expect_error({"--sweep", "--model", "gates"}, {"--model", "'gates'", "pin, core, tlm, rtl, rtl-sync"});
   expect_error({"--sweep", "--policy", "phong"},
                {"--policy", "'phong'", "patent, energy, none, device-energy"});
   expect_error({"--sweep", "--constants", "schlick"},
@@ -183,6 +183,10 @@ TEST(CliOptions, RepeatedOptionsAndConflicts) {
   expect_error({"--sweep", "--output", ""}, {"--output", "empty"});
   expect_error({"--sweep", "--real-views"}, {"--real-views", "needs --vcd"});
   expect_error({"--sweep", "--vcd", "x.vcd", "--real-views=yes"}, {"--real-views", "no value", "'yes'"});
+  // The synchronous variant takes --vcd (Verilator's VCD), not the real-valued views.
+  EXPECT_EQ(parse({"--sweep", "--model", "rtl-sync", "--vcd", "x.vcd"}).vcd_path, "x.vcd");
+  expect_error({"--sweep", "--model", "rtl-sync", "--vcd", "x.vcd", "--real-views"},
+               {"--real-views", "rtl-sync", "specular_rtl_sync.gtkw"});
 }
 
 // --width: one per width, repeatable; the RTL's w20 set; a bad name lists the names,

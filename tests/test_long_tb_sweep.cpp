@@ -4,7 +4,8 @@
 // core's, every result is within the bounds of the double reference, and every
 // latency is 2.5 periods. The printed summary is the pin row of docs/accuracy.md.
 // The same for the RTL twin under the same harness (`--model rtl`): equal to the core,
-// and so to the pin model, bit for bit, at 2.5 periods per operation.
+// and so to the pin model, bit for bit, at 2.5 periods per operation; and for the
+// synchronous variant (`--model rtl-sync`) at its own 2 periods (docs/rtl.md).
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -23,15 +24,16 @@ namespace specular {
 namespace tb {
 namespace {
 
-/// Runs the sweep on `model` under the test's policy and checks every result.
-void sweep_against_core(Model model, const Config& config) {
+/// Runs the sweep on `model` under the test's policy and checks every result; every
+/// operation must take `expected_cycles` from start to 35↑ (the model's timing table).
+void sweep_against_core(Model model, const Config& config, double expected_cycles = 2.5) {
   RunSettings settings;
   settings.model = model;
   settings.config = config;
   const Core core(settings.config);
   const Formats& f = core.formats();
   SweepSource sweep(f, {255, 128, 1});
-  Scoreboard scoreboard(settings.config);
+  Scoreboard scoreboard(settings.config, expected_cycles);
   std::vector<Stimulus> stimuli;
   std::size_t mismatches = 0;
   std::string first_mismatch;
@@ -71,8 +73,8 @@ void sweep_against_core(Model model, const Config& config) {
   EXPECT_EQ(s.count, 1021000u);
   EXPECT_EQ(mismatches, 0u) << "first at " << first_mismatch;
   EXPECT_EQ(s.failures, 0u) << text.str();
-  EXPECT_EQ(s.cycles_min, 2.5);
-  EXPECT_EQ(s.cycles_max, 2.5);
+  EXPECT_EQ(s.cycles_min, expected_cycles);
+  EXPECT_EQ(s.cycles_max, expected_cycles);
 }
 
 class PinSweep : public testing_support::PolicyTest {};
@@ -96,9 +98,24 @@ TEST_P(RtlSweep, RtlEqualsCoreBitForBitAndMeetsTheBounds) {
   sweep_against_core(Model::rtl, config());
 }
 
+// The synchronous variant under the same harness with its protocol: 2 periods each.
+class RtlSyncSweep : public testing_support::DevicePolicyTest {};
+TEST_P(RtlSyncSweep, RtlSyncEqualsCoreBitForBitAndMeetsTheBounds) {
+  try {
+    const Core core(config());
+  } catch (const std::invalid_argument&) {
+    const Config refused = config();
+    EXPECT_THROW(sweep_against_core(Model::rtl_sync, refused, 2.0), std::invalid_argument);
+    return;
+  }
+  sweep_against_core(Model::rtl_sync, config(), 2.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Policies, PinSweep, testing_support::every_policy(),
                          testing_support::policy_name);
 INSTANTIATE_TEST_SUITE_P(Devices, RtlSweep, testing_support::every_device(),
+                         testing_support::device_name);
+INSTANTIATE_TEST_SUITE_P(Devices, RtlSyncSweep, testing_support::every_device(),
                          testing_support::device_name);
 
 }  // namespace

@@ -115,7 +115,7 @@ TEST(TlmTb, VcdNeedsThePinModel) {
   const Outcome r = run_tb("--model tlm --cos 1 --n 1 --vcd '" + (dir / "w.vcd").string() + "'",
                            dir, "vcd");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.err.find("--vcd needs --model pin or rtl (the tlm model"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--vcd needs --model pin, rtl or rtl-sync (the tlm model"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "w.vcd"));
   const Outcome bad = run_tb("--model tlmx --cos 1 --n 1", dir, "bad");
   EXPECT_EQ(bad.status, 2);

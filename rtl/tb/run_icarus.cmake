@@ -8,10 +8,15 @@
 # WIDTHS: specular_tb's --width options of the width set, PARAMS: the device's
 # parameters of the same set (NAME=VALUE), both '|'-separated and empty for the
 # default set; ROM_DIR holds that set's images.
+# TB_TOP names the testbench module (default specular_device_tb; the synchronous
+# variant's is specular_device_sync_tb, with its own timing).
+if(NOT TB_TOP)
+  set(TB_TOP specular_device_tb)
+endif()
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
 string(REPLACE "|" ";" WIDTHS "${WIDTHS}")
 string(REPLACE "|" ";" PARAMS "${PARAMS}")
-list(TRANSFORM PARAMS PREPEND -Pspecular_device_tb.)
+list(TRANSFORM PARAMS PREPEND -P${TB_TOP}.)
 file(REMOVE_RECURSE ${SCRATCH})
 file(MAKE_DIRECTORY ${SCRATCH})
 
@@ -82,14 +87,14 @@ else()
   set(literal 0)
 endif()
 execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/device_tb.vvp -s specular_device_tb
-          "-Pspecular_device_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
-          "-Pspecular_device_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
-          "-Pspecular_device_tb.VECTORS=\"${SCRATCH}/vectors.csv\""
-          "-Pspecular_device_tb.PINS_IMAGE=\"${ROM_DIR}/pins.hex\""
-          -Pspecular_device_tb.LITERAL=${literal}
-          -Pspecular_device_tb.CONSTANTS=${CONSTANTS_VALUE}
-          -Pspecular_device_tb.NORMALISATION=${NORMALISATION_VALUE}
+  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/device_tb.vvp -s ${TB_TOP}
+          "-P${TB_TOP}.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+          "-P${TB_TOP}.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+          "-P${TB_TOP}.VECTORS=\"${SCRATCH}/vectors.csv\""
+          "-P${TB_TOP}.PINS_IMAGE=\"${ROM_DIR}/pins.hex\""
+          -P${TB_TOP}.LITERAL=${literal}
+          -P${TB_TOP}.CONSTANTS=${CONSTANTS_VALUE}
+          -P${TB_TOP}.NORMALISATION=${NORMALISATION_VALUE}
           ${PARAMS} ${SOURCES} ${TESTBENCH}
   RESULT_VARIABLE status OUTPUT_VARIABLE compile_log ERROR_VARIABLE compile_log)
 # Any iverilog warning fails the test (the device's files carry no `timescale: the
@@ -111,6 +116,6 @@ elseif(CORRUPT)
             "(status ${status})")
   endif()
   message(STATUS "the testbench stopped on the corrupted vector ${corrupt_vector} (status ${status})")
-elseif(NOT status EQUAL 0 OR NOT out MATCHES "specular_device_tb: PASS" OR out MATCHES "WARNING")
-  message(FATAL_ERROR "specular_device_tb failed (status ${status})")
+elseif(NOT status EQUAL 0 OR NOT out MATCHES "${TB_TOP}: PASS" OR out MATCHES "WARNING")
+  message(FATAL_ERROR "${TB_TOP} failed (status ${status})")
 endif()

@@ -3,6 +3,10 @@
 # (every vector must match, exit 0) and at T_sim / 2 (a register or pin must capture too
 # early: exit 1 with a MISMATCH naming it). T_SIM is the figure the bisection measured
 # (docs/silicon.md), not read from this run.
+# TOP: the top module (default specular_device).
+if(NOT TOP)
+  set(TOP specular_device)
+endif()
 foreach(case pass fail)
   if(case STREQUAL "pass")
     math(EXPR period_centi "${T_SIM_CENTI} * 11 / 10")
@@ -16,7 +20,7 @@ foreach(case pass fail)
   endif()
   set(period "${whole}.${frac}")
   file(REMOVE_RECURSE ${SCRATCH}/${case})
-  execute_process(COMMAND bash ${GATESIM} --netlist-dir ${NETLIST_DIR} --specular-tb ${SPECULAR_TB}
+  execute_process(COMMAND bash ${GATESIM} --top ${TOP} --netlist-dir ${NETLIST_DIR} --specular-tb ${SPECULAR_TB}
                           ${period} ${SCRATCH}/${case} ${ROM_DIR}
                   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
   message(STATUS "T = ${period} ns: status ${status}\n${out}")

@@ -1,4 +1,4 @@
-// A bench for the TLM tests (test_tlm_*): one or more targets (lt, pin, rtl), each behind
+// A bench for the TLM tests (test_tlm_*): one or more targets (lt, pin, rtl, rtl_sync), each behind
 // its own initiator socket with a SpecularDriver, its done_irq recorded edge by edge,
 // and scenario threads that run the test body. One elaboration per TEST.
 #pragma once
@@ -19,6 +19,7 @@
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "specular/twin/rtl_sync_target.h"
 #include "specular/twin/rtl_target.h"
 
 namespace specular {
@@ -27,10 +28,10 @@ namespace tlm_testing {
 using sc_core::sc_time;
 using sc_core::SC_NS;
 
-enum class Kind { lt, pin, rtl };
+enum class Kind { lt, pin, rtl, rtl_sync };
 
 inline const char* to_string(Kind kind) {
-  return kind == Kind::lt ? "lt" : kind == Kind::pin ? "pin" : "rtl";
+  return kind == Kind::lt ? "lt" : kind == Kind::pin ? "pin" : kind == Kind::rtl ? "rtl" : "rtl_sync";
 }
 
 /// One target with the initiator side that talks to it.
@@ -43,8 +44,10 @@ class Endpoint : public sc_core::sc_module {
       target = std::make_unique<SpecularLtTarget>("target", config, period);
     else if (kind == Kind::pin)
       target = std::make_unique<SpecularPinTarget>("target", config, period);
-    else
+    else if (kind == Kind::rtl)
       target = std::make_unique<SpecularRtlTarget>("target", config, period);
+    else
+      target = std::make_unique<SpecularRtlSyncTarget>("target", config, period);
     socket.bind(target->socket);
     target->done_irq(irq);
     SC_METHOD(on_irq);

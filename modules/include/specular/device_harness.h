@@ -6,7 +6,9 @@
 // (twin/: RtlHarness). A Device provides pins 17–35 as bus_in/bus_out/wire_in/wire_out
 // ports, the nets the monitor samples (select36, reg1_q, reg9_q, rom38_k, mul39_norm),
 // formats(), constant_h19(), constant_a20(), trace(file), and a constructor
-// (name, Config, bool real_views).
+// (name, Config, bool real_views). A device that samples its inputs as levels at the
+// rising clock edge (the synchronous variant, twin/: RtlSyncDevice) says so with
+// `static constexpr bool synchronous = true;` and is driven with its own protocol.
 #pragma once
 
 #include <cmath>
@@ -14,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -23,6 +26,14 @@
 
 namespace specular {
 
+/// Whether a device samples start (27) and the loads (30–33) as levels at the rising
+/// clock edge (`Device::synchronous`), instead of taking their edges as Fig. 1–2 do.
+template <class Device, class = void>
+struct is_synchronous_device : std::false_type {};
+template <class Device>
+struct is_synchronous_device<Device, std::void_t<decltype(Device::synchronous)>>
+    : std::bool_constant<Device::synchronous> {};
+
 /// Owns the device, its clock (pin 28) and every pin signal, ties pins 19,
 /// 20, 34 to their constants, and drives operations exactly as spec §3 "protocol" allows:
 ///   - pin 17 and, when they change, registers 2 and 10–12 (strobes 30–33) are set a
@@ -31,6 +42,10 @@ namespace specular {
 ///   - results are read at the rising edge of 35 (start + 2.5 T);
 ///   - starts come every 2 T while n, R, G, B are unchanged (only cos λ streams),
 ///     every 3 T when they change (they may be reloaded only after 35 rises).
+/// A synchronous device (is_synchronous_device) gets its protocol instead
+/// (docs/rtl.md): start, pin 17 and the loads with their data rise a quarter period
+/// before the start edge and start and the loads fall a quarter period after it;
+/// results are read at 35↑ (start + 2 T); the same 2 T and 3 T intervals.
 /// The run functions block: call them from an SC_THREAD.
 ///
 /// Pin 28 either runs freely from time 0 (an sc_clock: the testbench, the benches) or
@@ -282,6 +297,7 @@ void DeviceHarness<Device>::run_batch(const std::vector<Operands>& in, std::vect
     }
     wait_until(start - quarter);
     pin17_cos.write(op.cos);
+    if constexpr (is_synchronous_device<Device>::value) pin27_start.write(true);
     if (reload) {
       pin18_n.write(op.n);
       pin21_r.write(op.rgb[0]);
@@ -295,15 +311,23 @@ void DeviceHarness<Device>::run_batch(const std::vector<Operands>& in, std::vect
       loaded_ = true;
     }
     wait_until(start);
+    start_times_[i] = start;
+    ++started_;
+    if constexpr (is_synchronous_device<Device>::value) {
+      // Levels held a quarter period past the edge that samples them.
+      wait(quarter);
+    }
     pin30_load_n.write(false);
     pin31_load_r.write(false);
     pin32_load_g.write(false);
     pin33_load_b.write(false);
-    pin27_start.write(true);
-    start_times_[i] = start;
-    ++started_;
-    wait(period_ / 2);
-    pin27_start.write(false);
+    if constexpr (is_synchronous_device<Device>::value) {
+      pin27_start.write(false);
+    } else {
+      pin27_start.write(true);
+      wait(period_ / 2);
+      pin27_start.write(false);
+    }
   }
   while (done_seen_ < count) wait(result_event_);
   batch_out_ = nullptr;

@@ -8,7 +8,7 @@
 
 #include "Vspecular_device_sync_fast.h"
 #include "specular/arith.h"
-#include "specular/twin/rom38_banks.h"
+#include "specular/rom38_banks.h"
 #include "same_formats.h"
 
 namespace specular {

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "specular/arith.h"
-#include "specular/twin/rom38_banks.h"
+#include "specular/rom38_banks.h"
 #include "same_formats.h"
 
 namespace specular {

@@ -1,0 +1,88 @@
+// What the two RTL twins behind the pin interface share (RtlDevice: the drawn device,
+// RtlSyncDevice: the synchronous variant): the pins, the Config they are verilated for,
+// the one process that evaluates the verilated model, and Verilator's VCD. Each twin
+// adds only its own nets and its verilated class (twin/src/rtl_model.h).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "specular/core.h"
+#include "specular/device_pins.h"
+#include "specular/systemc.h"
+
+namespace specular {
+
+/// Pins 17–35 (DevicePins), as SpecularDevice has them. Inside, the
+/// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to the
+/// input pins, that copies the pins into the model, evaluates it and writes the
+/// outputs that changed back, sign-extending the signed buses. One process activation per input
+/// change: Verilator's own SystemC wrapper, with signals of its port types and
+/// adapters in between, took about 4 process activations per clock edge and ran
+/// slower than the netlist (docs/performance.md). Policies reach the model as its
+/// configuration inputs, tied off here: cfg_literal = Saturation::literal,
+/// cfg_rom38_bank = the ROM 38 image of the Config's constants and normalisation
+/// (rom38_banks.h, docs/rtl.md); pins 19 and 20 carry the constants h and a.
+///
+/// The model is verilated at the default widths (docs/design.md); a Config with other
+/// widths, or one the core refuses, is refused with std::invalid_argument.
+class RtlDeviceBase : public DevicePins {
+ public:
+  ~RtlDeviceBase() override;
+
+  const Config& config() const { return config_; }
+  const Formats& formats() const { return formats_; }
+  code_t constant_h19() const { return pin19_code(config_); }
+  code_t constant_a20() const { return pin20_code(config_); }
+
+  /// The SystemC trace file gets nothing from the twin: its nets are traced by
+  /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw,
+  /// waveforms/specular_rtl_sync.gtkw for the synchronous variant).
+  void trace(sc_core::sc_trace_file*) const override {}
+  /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`
+  /// from the start of simulation on. Call before sc_start (std::logic_error after).
+  void open_vcd(const std::string& path);
+
+  // ---- what the harness watches (observation outputs both twins have) ----
+  wire select36{"select36"};
+  bus_signal reg1_q{"reg1_q"};
+  bus_signal reg9_q{"reg9_q"};
+  bus_signal rom38_k{"rom38_k"};
+  bus_signal mul39_norm{"mul39_norm"};
+
+ protected:
+  struct Verilated;  // the verilated model, its VCD writer, the pins' channels (rtl_model.h)
+
+  /// What tells a twin apart in the shared code: its names in messages and how to
+  /// make its verilated model.
+  struct Variant {
+    const char* class_name;  ///< "RtlDevice": names open_vcd in its error
+    const char* twin_name;   ///< "RTL twin": names the twin in constructor errors
+    const char* gtkw;        ///< the GTKWave save file for its VCD
+    std::unique_ptr<Verilated> (*make_model)(const Config&);
+  };
+
+  /// Refuses a Config the model was not verilated for and `real_views` (accepted for
+  /// DeviceHarness's sake: the twin's waveform is Verilator's own, codes only), then
+  /// makes the model with its policies tied off.
+  RtlDeviceBase(sc_core::sc_module_name name, const Config& config, bool real_views,
+                const Variant& variant);
+
+ private:
+  template <class Top, class Nets>
+  friend struct RtlModel;
+
+  void before_end_of_elaboration() override;
+  void end_of_elaboration() override;
+  void start_of_simulation() override;
+  void end_of_simulation() override;
+  void evaluate();
+
+  const char* class_name_;
+  Config config_;
+  Formats formats_;
+  std::unique_ptr<Verilated> rtl_;
+  std::string vcd_path_;
+};
+
+}  // namespace specular

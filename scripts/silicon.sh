@@ -11,7 +11,7 @@
 #                 scripts/silicon/NAME/.
 #   --no-gatesim  skip the T_sim bisection and the hazards (T_sim is then reported as
 #                 not measured).
-#   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, about 10 minutes).
+#   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, 10-15 minutes).
 #   ROM_DIR       rom5.hex, rom38.hex, pins.hex (default build/rtl/rom/default).
 #
 # OUT_DIR gets silicon_report.md, silicon_summary.json, the mapped netlist (mapped.v), the

@@ -7,6 +7,7 @@
 #
 #   scripts/gatesim.sh [options] PERIOD_NS OUT_DIR [ROM_DIR]
 #   scripts/gatesim.sh [options] --bisect T_STA_NS OUT_DIR [ROM_DIR]
+#   scripts/gatesim.sh [options] --hazards T_SIM_NS OUT_DIR [ROM_DIR]
 #
 #   --top NAME          top module (default specular_device); its testbench settings are
 #                       scripts/silicon/NAME/gatesim.conf
@@ -23,8 +24,17 @@
 #                       build/testbench/specular_tb)
 #   --bisect T_STA      find T_sim: the smallest period (to 0.1 ns) at which every vector
 #                       passes, searched from T_STA/4 to 2 T_STA; writes OUT_DIR/tsim.txt
+#   --hazards T_SIM     Fig. 2's hazards at T_SIM and 2 T_SIM: start (27) swept across a
+#                       whole period (16 offsets from -T/2 to 7T/16 around its rising
+#                       clock edge, and 0.499 T; each pass/fail boundary refined to
+#                       0.1 ns), the reset pulse of flip-flop 41 against the DFFSR's
+#                       recovery/removal, select 36's delay, register 9's settling;
+#                       writes OUT_DIR/hazards.md and OUT_DIR/hazards.json (vectors
+#                       here by default: --groups 1 --random 4, 14 operations; about
+#                       10 minutes)
 # ROM_DIR holds rom5.hex, rom38.hex, pins.hex (default build/rtl/rom/default).
-# Exit status: 0 every vector matches (--bisect: T_sim found), 1 the first mismatch (named
+# Exit status: 0 every vector matches (--bisect: T_sim found; --hazards: the tables
+# written, whatever the sweep found), 1 the first mismatch (named
 # with the vector, register or pin, got and want) or a tool failed, 2 bad arguments or a
 # missing package.
 set -euo pipefail
@@ -33,7 +43,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 
-usage() { sed -n '2,30p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | grep '^#' | sed 's/^# \{0,1\}//'; }
 fail_args() { echo "gatesim.sh: $1 (see --help)" >&2; exit 2; }
 
 top=specular_device
@@ -43,16 +53,19 @@ random=8
 groups=2
 specular_tb="$root/build/testbench/specular_tb"
 bisect=""
+hazards=""
+random_set=0
+groups_set=0
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
-    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect)
+    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --policies) policies="$2" ;;
-        --random) random="$2" ;; --groups) groups="$2" ;; --specular-tb) specular_tb="$2" ;;
-        --bisect) bisect="$2" ;;
+        --random) random="$2"; random_set=1 ;; --groups) groups="$2"; groups_set=1 ;;
+        --specular-tb) specular_tb="$2" ;; --bisect) bisect="$2" ;; --hazards) hazards="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -60,7 +73,15 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 number='^[0-9]+([.][0-9]+)?$'
-if [[ -n "$bisect" ]]; then
+[[ -z "$bisect" || -z "$hazards" ]] || fail_args "--bisect and --hazards exclude each other"
+if [[ -n "$hazards" ]]; then
+  [[ ${#args[@]} -ge 1 && ${#args[@]} -le 2 ]] || fail_args "usage: gatesim.sh [options] --hazards T_SIM_NS OUT_DIR [ROM_DIR]"
+  [[ "$hazards" =~ $number ]] && (( $(echo "$hazards >= 0.1 && $hazards <= 500" | bc) )) \
+    || fail_args "T_SIM '$hazards' is not a period in ns from 0.1 to 500"
+  out="${args[0]}"; rom_dir="${args[1]:-$root/build/rtl/rom/default}"
+  [[ $random_set -eq 1 ]] || random=4
+  [[ $groups_set -eq 1 ]] || groups=1
+elif [[ -n "$bisect" ]]; then
   [[ ${#args[@]} -ge 1 && ${#args[@]} -le 2 ]] || fail_args "usage: gatesim.sh [options] --bisect T_STA_NS OUT_DIR [ROM_DIR]"
   [[ "$bisect" =~ $number ]] && (( $(echo "$bisect > 0" | bc) )) || fail_args "T_STA '$bisect' is not a period in ns above 0"
   out="${args[0]}"; rom_dir="${args[1]:-$root/build/rtl/rom/default}"
@@ -139,6 +160,69 @@ run_at() {
   done < "$out/policies.txt"
   return $status
 }
+
+# ---- Fig. 2's hazards: start swept across a period, the reset pulse of flip-flop 41 ----
+# One compile per period (the testbench and the hazard probe of the top), one run per
+# start offset (+START_OFFSET, in periods); the probe's last HAZARD line is kept.
+if [[ -n "$hazards" ]]; then
+  [[ -n "${TB_PROBE:-}" && -f "$TB_PROBE" ]] || fail_args "top '$top' has no hazard probe (TB_PROBE in $conf)"
+  read -r name constants normalisation literal vectors < "$out/policies.txt"
+  hz="$out/hazards"
+  mkdir -p "$hz"
+  # run_offset T X: 0 pass, 1 fail; the log is $hz/T<T>/x<X>.log
+  run_offset() {
+    local log="$hz/T$1/x$2.log"
+    (cd "$rom_dir" && vvp -n "$hz/T$1/tb.vvp" "+START_OFFSET=$2") > "$log" 2>&1
+    grep -q "PASS" "$log"
+  }
+  # refine T A B A_OK: bisect the boundary between offsets A and B to 0.1 ns; A keeps its
+  # status A_OK, B the other; both ends go to boundaries.txt.
+  refine() {
+    local T=$1 a=$2 b=$3 a_ok=$4 m m_ok
+    while (( $(echo "($b - $a) * $T > 0.1" | bc -l) )); do
+      m=$(echo "($a + $b) / 2" | bc -l | xargs printf '%.6f')
+      if run_offset "$T" "$m"; then m_ok=1; else m_ok=0; fi
+      echo "$m $m_ok" >> "$hz/T$T/sweep.txt"
+      if [[ "$m_ok" == "$a_ok" ]]; then a=$m; else b=$m; fi
+    done
+    echo "boundary $a $b $a_ok" >> "$hz/T$T/boundaries.txt"
+  }
+  for T in "$hazards" "$(echo "$hazards * 2" | bc -l | xargs printf '%.2f')"; do
+    mkdir -p "$hz/T$T"
+    iverilog -g2005 -gspecify -o "$hz/T$T/tb.vvp" -s "$TB_TOP" -s "$TB_PROBE_TOP" -DGATE_LEVEL \
+      "-DSDF_FILE=\"$out/icarus.sdf\"" \
+      "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
+      "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \
+      "-P$TB_TOP.LITERAL=$literal" "-P$TB_TOP.CONSTANTS=$constants" \
+      "-P$TB_TOP.NORMALISATION=$normalisation" ${TB_PARAMS[@]/#/-P$TB_TOP.} \
+      "$OSU018/osu018_stdcells.v" "$out/rom_macros_gatesim.v" "$out/mapped_icarus.v" \
+      "$TB_FILE" "$TB_PROBE" > "$hz/T$T/compile.log" 2>&1 \
+      || { echo "gatesim.sh: iverilog failed; see $hz/T$T/compile.log" >&2; exit 1; }
+    : > "$hz/T$T/sweep.txt"
+    prev_x=""; prev_ok=""
+    for k in $(seq 0 15); do
+      x=$(echo "-0.5 + $k / 16" | bc -l | xargs printf '%.6f')
+      if run_offset "$T" "$x"; then ok=1; else ok=0; fi
+      echo "$x $ok" >> "$hz/T$T/sweep.txt"
+      echo "gatesim.sh: hazards T = $T ns, start offset $x T: $([[ $ok -eq 1 ]] && echo pass || grep -m1 -E 'MISMATCH|fatal|FATAL|specular_device_tb:' "$hz/T$T/x$x.log" || echo 'no result')"
+      # A boundary between two offsets: refine it to 0.1 ns.
+      [[ -z "$prev_ok" || "$ok" == "$prev_ok" ]] || refine "$T" "$prev_x" "$x" "$prev_ok"
+      prev_x=$x; prev_ok=$ok
+    done
+    # Start just before the falling edge (x -> 0.5, the same phase as the first offset
+    # -0.5 of the next edge): refine up to 0.5 when the last offset passes.
+    if [[ "$ok" == 1 ]]; then
+      x=0.499000
+      if run_offset "$T" "$x"; then ok=1; else ok=0; fi
+      echo "$x $ok" >> "$hz/T$T/sweep.txt"
+      [[ "$ok" == 1 ]] || refine "$T" "$prev_x" "$x" 1
+    fi
+  done
+  /usr/bin/python3 "$here/silicon/hazards_report.py" "$out" "$hazards" \
+    || { echo "gatesim.sh: the hazard report failed" >&2; exit 1; }
+  echo "gatesim.sh: hazards written to $out/hazards.md, $out/hazards.json"
+  exit 0
+fi
 
 if [[ -z "$bisect" ]]; then
   set +e

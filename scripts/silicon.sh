@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
 # The device in silicon: rtl/ mapped onto the OSU 0.18 um standard cells (qflow-tech-osu018),
 # ROMs 5 and 38 as memory macros, static timing with OpenSTA, and (unless --no-gatesim)
-# T_sim from the gate-level simulation (scripts/gatesim.sh). docs/silicon.md explains it.
+# T_sim from the gate-level simulation (scripts/gatesim.sh) and Fig. 2's hazards measured
+# there (unless --no-hazards). docs/silicon.md explains it.
 #
-#   scripts/silicon.sh [--top NAME] [--no-gatesim] OUT_DIR [ROM_DIR]
+#   scripts/silicon.sh [--top NAME] [--no-gatesim] [--no-hazards] OUT_DIR [ROM_DIR]
 #
 #   --top NAME    the top module (default specular_device); its own pieces (SDC, named
 #                 paths, the control unit's expected cells, the testbench timing) live in
 #                 scripts/silicon/NAME/.
-#   --no-gatesim  skip the T_sim bisection (T_sim is then reported as not measured).
+#   --no-gatesim  skip the T_sim bisection and the hazards (T_sim is then reported as
+#                 not measured).
+#   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, 10-15 minutes).
 #   ROM_DIR       rom5.hex, rom38.hex, pins.hex (default build/rtl/rom/default).
 #
 # OUT_DIR gets silicon_report.md, silicon_summary.json, the mapped netlist (mapped.v), the
 # SDC (constraints.sdc), the SDF (device.sdf), the ROM macros' Liberty (rom_macros.lib)
-# and the raw tool logs (yosys.log, sta.log, sta_*.txt, path_*.txt, gatesim/).
+# the hazard table (hazards.md, hazards.json) and the raw tool logs (yosys.log, sta.log,
+# sta_*.txt, path_*.txt, gatesim/).
 # Exit status: 0 report written, 1 a tool failed, 2 bad arguments or a missing package.
 set -euo pipefail
 
@@ -22,11 +26,12 @@ root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 
 usage() {
-  sed -n '2,18p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,22p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 top=specular_device
 gatesim=1
+hazards=1
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -35,12 +40,13 @@ while [[ $# -gt 0 ]]; do
            top="$2"; shift 2 ;;
     --top=*) top="${1#--top=}"; shift ;;
     --no-gatesim) gatesim=0; shift ;;
+    --no-hazards) hazards=0; shift ;;
     -*) echo "silicon.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     *) args+=("$1"); shift ;;
   esac
 done
 if [[ ${#args[@]} -lt 1 || ${#args[@]} -gt 2 ]]; then
-  echo "usage: scripts/silicon.sh [--top NAME] [--no-gatesim] OUT_DIR [ROM_DIR]  (--help)" >&2
+  echo "usage: scripts/silicon.sh [--top NAME] [--no-gatesim] [--no-hazards] OUT_DIR [ROM_DIR]  (--help)" >&2
   exit 2
 fi
 top_dir="$here/silicon/$top"
@@ -140,8 +146,19 @@ if [[ $gatesim -eq 1 ]]; then
   fi
 fi
 t3=$(seconds)
-printf 'mapping_s %.1f\nsta_s %.1f\ngatesim_s %.1f\n' "$(echo "$t1 - $t0" | bc)" \
-  "$(echo "$t2 - $t1" | bc)" "$(echo "$t3 - $t2" | bc)" > "$out/times.txt"
+# ---- Fig. 2's hazards at T_sim and 2 T_sim -------------------------------------------
+if [[ $gatesim -eq 1 && $hazards -eq 1 ]]; then
+  t_sim=$(awk '/t_sim_ns/ {print $2}' "$out/gatesim/tsim.txt")
+  if ! bash "$here/gatesim.sh" --top "$top" --netlist-dir "$out" --hazards "$t_sim" "$out/hazards" "$rom_dir" \
+       > "$out/hazards.log" 2>&1; then
+    echo "silicon.sh: the hazard measurements failed; see $out/hazards.log" >&2
+    exit 1
+  fi
+  cp "$out/hazards/hazards.md" "$out/hazards/hazards.json" "$out/"
+fi
+t4=$(seconds)
+printf 'mapping_s %.1f\nsta_s %.1f\ngatesim_s %.1f\nhazards_s %.1f\n' "$(echo "$t1 - $t0" | bc)" \
+  "$(echo "$t2 - $t1" | bc)" "$(echo "$t3 - $t2" | bc)" "$(echo "$t4 - $t3" | bc)" > "$out/times.txt"
 
 # ---- the report --------------------------------------------------------------------
 if ! /usr/bin/python3 "$here/silicon/report.py" "$out" "$top" "$top_dir"; then

@@ -5,6 +5,7 @@ file(READ ${OUT}/silicon_report.md report)
 foreach(section "## Area per block" "## ROM macros" "## Area total" "## Cells and flip-flops"
                 "## Control unit 16: Fig. 2's gates" "## Static timing (OpenSTA)"
                 "## Results per second" "## T_sta beside T_sim"
+                "## Fig. 2's hazards in the gate-level simulation"
                 "## What STA does not time, and what it assumes there" "## Summary"
                 "| multiplier 6 |" "| multiplier 39 |" "| register 9 |" "| control unit 16"
                 "| ROM5_MACRO | 32 768 x 22 |" "| ROM38_MACRO | 16 384 x 25 |"

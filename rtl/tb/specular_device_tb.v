@@ -42,6 +42,13 @@ module specular_device_tb;
   // Data of pins 18, 21-23 LOAD_SETUP periods before their strobes 30-33 rise (0: with
   // them, as the zero-delay models allow; a flip-flop with setup time needs more).
   parameter real LOAD_SETUP = 0.0;
+  // +START_OFFSET=x (-0.5 <= x < 0.5, default 0): start (27) and its data come x periods
+  // after the rising clock edge the operation is timed from (negative: before it);
+  // scripts/gatesim.sh --hazards sweeps it across a whole period.
+  real start_offset = 0.0;
+  initial if ($value$plusargs("START_OFFSET=%f", start_offset) &&
+              (start_offset < -0.5 || start_offset >= 0.5))
+    $fatal(1, "specular_device_tb: START_OFFSET %f is outside [-0.5, 0.5) periods", start_offset);
 
   // The device's width parameters (rtl/specular_device.v; defaults: docs/design.md's
   // formats, as specular_tb uses them without --width).
@@ -230,7 +237,8 @@ module specular_device_tb;
     real rising;
     begin
       rising = T / 2;
-      while (rising < now + T / 4 + LOAD_SETUP * T) rising = rising + T;
+      while (rising < now + T / 4 + LOAD_SETUP * T - (start_offset < 0.0 ? start_offset * T : 0.0))
+        rising = rising + T;
       first_edge_after_quarter = rising;
     end
   endfunction
@@ -242,14 +250,15 @@ module specular_device_tb;
              when, $realtime, pin35_done, obs_q41, obs_q42, obs_select36, obs_write37, obs_nand45);
   endtask
 
-  // Start an operation at `at` (a rising clock edge), data a quarter period before;
+  // Start an operation at `at` (a rising clock edge; START_OFFSET periods later when
+  // set), data a quarter period before;
   // returns with start high, at the start edge (the caller lowers it T/2 later).
   task raise_start(input real at, input [COS_W-1:0] cos_code, input integer index);
     reg reload;
     begin
       reload = !loaded || v_n[index] != loaded_n || v_r[index] != loaded_r ||
                v_g[index] != loaded_g || v_b[index] != loaded_b;
-      #(at - T / 4 - LOAD_SETUP * T - $realtime);
+      #(at + start_offset * T - T / 4 - LOAD_SETUP * T - $realtime);
       if (reload) begin
         pin18_n = v_n[index];
         pin21_r = v_r[index]; pin22_g = v_g[index]; pin23_b = v_b[index];

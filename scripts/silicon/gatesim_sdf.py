@@ -5,8 +5,9 @@
 
 Icarus 11's SDF reader refuses IOPATHs between bus bits (`A[13] Q[24]`), which OpenSTA
 writes for the ROM macros; the macros are behavioural models anyway. So OUT_DIR/icarus.sdf
-is device.sdf without the macros' CELL entries (and OUT_DIR/mapped_icarus.v the netlist
-with dots in escaped names replaced), and OUT_DIR/rom_macros_gatesim.v is
+is device.sdf without the macros' CELL entries, with every (min::max) triple given a
+typical value Icarus selects (and OUT_DIR/mapped_icarus.v the netlist with dots in
+escaped names replaced), and OUT_DIR/rom_macros_gatesim.v is
 rom_macros_sim.v with each macro's ACCESS set to the largest IOPATH delay OpenSTA
 computed for it (its Liberty access time at the load it drives).
 """
@@ -37,6 +38,11 @@ def main():
     # flatten, `k_rom.genblk1.macro` from techmap): dots become double underscores, here and in
     # the netlist copy Icarus reads (OpenSTA reads the original).
     text = text.replace("\\.", "__")
+    # OpenSTA writes one corner as (min::max) with the typical value left empty; Icarus 11
+    # selects the typical value and, finding none, silently keeps the cell model's own
+    # unloaded specify delay (docs/silicon.md, "Why T_sim was below T_sta"). Fill the
+    # typical value with the maximum, the slower of the two (they differ by < 1 ps).
+    text, filled = re.subn(r"\((-?[\d.]+)::(-?[\d.]+)\)", r"(\1:\2:\2)", text)
     open(f"{out}/icarus.sdf", "w").write(text)
     netlist = open(f"{src}/mapped.v").read()
     netlist = re.sub(r"\\(\S+)", lambda m: "\\" + m.group(1).replace(".", "__"), netlist)
@@ -46,6 +52,7 @@ def main():
         models = re.sub(rf"(module {name} .*?parameter real ACCESS = )[\d.]+",
                         lambda m: m.group(1) + f"{t:.4f}", models, flags=re.S)
     open(f"{out}/rom_macros_gatesim.v", "w").write(models)
+    print(f"{filled} delay triples (min::max) given their typical value (max)")
     for name, t in sorted(access.items()):
         print(f"{name} access {t:.4f} ns (largest SDF IOPATH)")
     return 0

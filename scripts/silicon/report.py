@@ -4,7 +4,8 @@
   report.py OUT_DIR TOP TOP_DIR
 
 Reads stat.txt (Yosys, areas per module), rom_model.json (the ROM macros), sta_summary.txt
-and path_*.txt (OpenSTA), gatesim/tsim.txt (the T_sim bisection, when run), times.txt and
+and path_*.txt (OpenSTA), gatesim/tsim.txt (the T_sim bisection, when run), hazards.json
+and hazards.md (gatesim.sh --hazards, when run), times.txt and
 TOP_DIR/top.json (the per-top blocks, expected control-unit cells, paths). The summary's
 keys are stable (docs/silicon.md lists them).
 """
@@ -115,6 +116,31 @@ def fmt(n, digits=0):
     return s.replace(",", " ")
 
 
+def hazard_keys(hazards):
+    """The hazard figures under stable summary keys (None when not measured)."""
+    if hazards is None:
+        return None
+    keys = {"flip_flop41_" + k: v for k, v in hazards["flip_flop41_checks"].items()}
+    for label, p in zip(("t_sim", "2_t_sim"), hazards["periods"].values()):
+        h = p["at_offset_0"] or {}
+        keys.update({
+            f"{label}_period_ns": p["period_ns"],
+            f"{label}_start_offsets_failing_of_16": p["offsets_failing"],
+            f"{label}_start_failing_windows_ns": [[r["from_ns"], r["to_ns"]] for r in p["failing_windows"]],
+            f"{label}_reset41_narrowest_ns": h.get("reset41_narrowest_ns"),
+            f"{label}_reset41_recovery_margin_ns": h.get("recovery_margin_ns"),
+            f"{label}_reset41_removal_margin_ns": h.get("removal_margin_ns"),
+            f"{label}_reset41_not_cleared": h.get("reset41_not_cleared"),
+            f"{label}_select36_after_clk_fall_ns": (h.get("select36_after_clk_fall_ns") or [None])[0],
+            f"{label}_reg9_d_settle_ns": h.get("reg9_d_settle_ns"),
+            f"{label}_strobe37_pulses": p["strobe37_pulses"],
+            f"{label}_strobe37_narrowest_ns": p["strobe37_narrowest_ns"],
+            f"{label}_pin35_pulses": p["pin35_pulses"],
+            f"{label}_pin35_narrowest_ns": p["pin35_narrowest_ns"],
+        })
+    return keys
+
+
 def main():
     out, top, top_dir = sys.argv[1], sys.argv[2], sys.argv[3]
     spec = json.loads(read(f"{top_dir}/top.json"))
@@ -167,6 +193,10 @@ def main():
     if os.path.exists(tsim_file):
         t = dict(line.split(None, 1) for line in read(tsim_file).splitlines() if line.strip())
         t_sim = float(t["t_sim_ns"])
+    # Fig. 2's hazards (gatesim.sh --hazards via silicon.sh), when measured.
+    hazards = None
+    if os.path.exists(f"{out}/hazards.json"):
+        hazards = json.loads(read(f"{out}/hazards.json"))
     times = dict(line.split() for line in read(f"{out}/times.txt").splitlines() if line.strip())
     unconstrained_counts = re.findall(r"There are (\d+) (.*?)\.", read(f"{out}/sta_unconstrained.txt"))
 
@@ -197,6 +227,7 @@ def main():
         "paths": {name: {k: p[k] for k in ("delay_ns", "slack_ns", "gate_levels") if k in p}
                   for name, p in paths.items()},
         "times_s": {k: float(v) for k, v in times.items()},
+        "hazards": hazard_keys(hazards),
     }
     with open(f"{out}/silicon_summary.json", "w") as f:
         json.dump(summary, f, indent=1)
@@ -278,6 +309,12 @@ def main():
         w(f"| {t_sta:.2f} | {t_sim:.1f} | {t_sim / t_sta:.3f} |\n")
         w("T_sim: the smallest period (bisection to 0.1 ns) at which scripts/gatesim.sh replays "
           "every vector with the SDF delays (gatesim/tsim.txt).\n")
+    w("## Fig. 2's hazards in the gate-level simulation\n")
+    if hazards is None:
+        w("Not measured in this run (--no-gatesim or --no-hazards).\n")
+    else:
+        table = read(f"{out}/hazards.md").split("\n", 2)[2]  # without its title
+        w(table)
     w("## What STA does not time, and what it assumes there\n")
     for count, what in unconstrained_counts:
         w(f"- OpenSTA check_setup: {count} {what} (sta_unconstrained.txt)")

@@ -512,6 +512,10 @@ extern "C" int LLVMFuzzerInitialize(int*, char***) {
   for (const char* type : report::protocol_types)
     sc_core::sc_report_handler::set_actions(type, sc_core::SC_DISPLAY | sc_core::SC_ABORT);
   driver = new Driver("fuzz");  // lives until exit, as SystemC wants
+  // Elaborate and run the initialisation now: otherwise the first input's go_
+  // notification, made before the first sc_start, is lost and that input never runs
+  // (a replayed finding passed unseen when it came first).
+  sc_core::sc_start(sc_core::SC_ZERO_TIME);
   return 0;
 }
 

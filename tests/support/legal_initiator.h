@@ -39,17 +39,21 @@ class LegalInitiator : public sc_core::sc_module {
 
   tlm_utils::simple_initiator_socket<LegalInitiator, 32> socket{"socket"};
 
+  /// Streaming width argument of transport(): the data length (no streaming).
+  static constexpr unsigned streaming_width_of_length = ~0u;
+
   /// One access from the calling thread; returns when it has completed (and the
   /// annotated time has passed) with the target's response status.
   tlm::tlm_response_status transport(Path path, tlm::tlm_command command, std::uint64_t address,
                                      void* data, unsigned length,
-                                     const sc_core::sc_time& request_delay = sc_core::SC_ZERO_TIME) {
+                                     const sc_core::sc_time& request_delay = sc_core::SC_ZERO_TIME,
+                                     unsigned streaming_width = streaming_width_of_length) {
     tlm::tlm_generic_payload tx;
     tx.set_command(command);
     tx.set_address(address);
     tx.set_data_ptr(static_cast<unsigned char*>(data));
     tx.set_data_length(length);
-    tx.set_streaming_width(length);
+    tx.set_streaming_width(streaming_width == streaming_width_of_length ? length : streaming_width);
     tx.set_byte_enable_ptr(nullptr);
     tx.set_byte_enable_length(0);
     tx.set_dmi_allowed(false);

@@ -18,7 +18,11 @@ module rom38 #(
   localparam WORDS = 1 << (BANK_BITS + N_BITS);
 
   reg [WORD_W-1:0] k_rom [0:WORDS-1];
+  // A host that writes the words itself (the verilated twin: twin/rom_words.vlt) defines
+  // SPECULAR_ROM_WORDS_FROM_HOST and the model reads no file.
+`ifndef SPECULAR_ROM_WORDS_FROM_HOST
   initial $readmemh(IMAGE, k_rom);
+`endif
 
   assign k = k_rom[{bank, reg2}];
 endmodule

@@ -24,7 +24,11 @@ module rom5 #(
   localparam NORM_W = BUS_W + ADDR_BITS;  // bus with ADDR_BITS zeros appended
 
   reg [WORD_BITS-1:0] mantissa_rom [0:WORDS-1];
+  // A host that writes the words itself (the verilated twin: twin/rom_words.vlt) defines
+  // SPECULAR_ROM_WORDS_FROM_HOST and the model reads no file.
+`ifndef SPECULAR_ROM_WORDS_FROM_HOST
   initial $readmemh(IMAGE, mantissa_rom);
+`endif
 
   // Leading-one detector: index of the highest one below the sign bit.
   reg [POS_W-1:0] msb;

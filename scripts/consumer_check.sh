@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Checks that a SoC project can use the IP as a package (issues 3 and 20):
-#   1. installs a configured build tree into a temporary prefix (cmake --install),
-#      and checks the prefix holds only the libraries, their headers and the package;
+#   1. installs a configured build tree into a temporary prefix (cmake --install), moves
+#      it, and checks the prefix holds only the libraries, their headers and the package,
+#      and names no file of the build tree or of the folder it was installed into;
 #   2. compiles every installed header alone under -Wall -Wextra -Wpedantic -Werror,
 #      not as a SYSTEM header;
 #   3. configures, builds and runs examples/consumer with find_package(SpecularUnit)
@@ -27,10 +28,20 @@ trap 'rm -rf "$work"' EXIT
 rtl=$(sed -n 's/^SPECULAR_BUILD_RTL:BOOL=//p' "$build/CMakeCache.txt")
 case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl" ;; *) rtl=OFF; targets="lt pin" ;; esac
 
-echo "== install $build into $work/prefix (rtl component: $rtl)"
+echo "== install $build, move it to $work/prefix (rtl component: $rtl)"
 cmake --build "$build" --target specular -j "$jobs"
 if [[ $rtl == ON ]]; then cmake --build "$build" --target specular_twin -j "$jobs"; fi
-cmake --install "$build" --prefix "$work/prefix" >"$work/install.log"
+# Installed in one folder and used from another: the package must not depend on where it
+# was installed, nor on any file of the build tree (the twin writes its ROMs from C++).
+cmake --install "$build" --prefix "$work/install_first" >"$work/install.log"
+mv "$work/install_first" "$work/prefix"
+# (The archives may carry debug information naming sources; the ROM images are data.)
+if named=$( (grep -rlF --include='*.cmake' -e "$build/" -e "$work/install_first" "$work/prefix";
+             grep -rlaF -e "$build/rtl/rom" "$work/prefix") | sort -u | grep .); then
+  echo "consumer_check: FAIL: installed files name the build tree, its ROM images or the first install folder:" >&2
+  echo "$named" >&2
+  exit 1
+fi
 (cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
 echo "   ... $(wc -l <"$work/files.txt") files"
 unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake)$' \

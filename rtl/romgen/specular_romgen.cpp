@@ -1,8 +1,9 @@
 // specular_romgen: the ROM images of the RTL twin, written once from the C++ tables.
 //
-// ROM 5 and ROM 38 of rtl/ read `$readmemh` images. They come from the same tables the
-// core and the SystemC model use (arith::Rom5Table, arith::Rom38Table), at build time,
-// for the widths given: never hand-copied, never committed. The same tool checks a dump
+// ROM 5 and ROM 38 of rtl/ read `$readmemh` images in Icarus, Yosys and the silicon flow
+// (the verilated twin is filled from the same words in C++, twin/src/rom_loader.h). They
+// come from the tables the core and the SystemC model use (specular::rom_images), at
+// build time, for the widths given: never hand-copied, never committed. The same tool checks a dump
 // the RTL wrote while reading its ROMs through their ports (rtl/tb/rom_read_tb.v), so a
 // test proves every word the RTL reads equals the table's.
 //
@@ -17,7 +18,6 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -25,6 +25,7 @@
 
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
+#include "specular/rom_images.h"
 #include "specular/constants.h"
 #include "specular/format.h"
 
@@ -32,28 +33,7 @@ namespace {
 
 using specular::code_t;
 using specular::Formats;
-using specular::Normalisation;
 using specular::Widths;
-
-/// ROM 38's banks: one per (constants, normalisation) pair, at rom38_bank() (the RTL's
-/// cfg_rom38_bank input; specular/rom38_banks.h). A pair whose table the device
-/// refuses (a word ROM 38 cannot hold) leaves its bank zero, as unused banks are.
-std::vector<std::optional<specular::arith::Rom38Table>> rom38_banks(const Formats& f, int bank_bits) {
-  std::vector<std::optional<specular::arith::Rom38Table>> banks(std::size_t{1} << bank_bits);
-  for (const specular::Constants constants : specular::every_constants)
-    for (const Normalisation normalisation : specular::every_normalisation) {
-      specular::Config config;
-      config.widths = f.widths;
-      config.normalisation = normalisation;
-      config.constants = constants;
-      try {
-        banks.at(specular::rom38_bank(config)).emplace(f, config);
-      } catch (const std::invalid_argument&) {
-        // refused by the device too (Rom38Table's message names why)
-      }
-    }
-  return banks;
-}
 
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -136,33 +116,21 @@ void write_image(const std::string& path, const std::string& comment, int width,
 
 void write_images(const Options& o) {
   const Formats f(o.widths);
-  const specular::arith::Rom5Table rom5(f);
-  std::vector<std::uint64_t> words(rom5.words().begin(), rom5.words().end());
+  const specular::RomImages images = specular::rom_images(f, o.bank_bits);
   write_image(o.out_dir + "/rom5.hex",
-              "ROM 5 mantissa table: " + std::to_string(words.size()) + " words x " +
+              "ROM 5 mantissa table: " + std::to_string(images.rom5.size()) + " words x " +
                   std::to_string(o.widths.rom5_word_bits) + " bits",
-              o.widths.rom5_word_bits, words);
-
-  const std::size_t bank_words = static_cast<std::size_t>(f.rom38_words());
-  words.assign(bank_words << o.bank_bits, 0);
-  const auto tables = rom38_banks(f, o.bank_bits);
-  int filled = 0;
-  for (std::size_t b = 0; b < tables.size(); ++b) {
-    if (!tables[b]) continue;
-    ++filled;
-    for (std::size_t n = 0; n < bank_words; ++n)
-      words[b * bank_words + n] = static_cast<std::uint64_t>(tables[b]->words()[n]);
-  }
+              o.widths.rom5_word_bits, images.rom5);
   write_image(o.out_dir + "/rom38.hex",
               "ROM 38 s*K(n): " + std::to_string(1 << o.bank_bits) + " banks (bank = 4 * constants + " +
-                  "normalisation; " + std::to_string(filled) + " filled, others zero) x " +
-                  std::to_string(bank_words) + " words x " + f.rom38.name(),
-              f.rom38.width(), words);
+                  "normalisation; " + std::to_string(images.rom38_banks_filled) + " filled, others zero) x " +
+                  std::to_string(f.rom38_words()) + " words x " + f.rom38.name(),
+              f.rom38.width(), images.rom38);
 
   // Pins 19 (h) and 20 (a) per constants policy, for testbenches that tie them off as
   // the pin harness does: word 2c = h, word 2c + 1 = a of Constants value c (zero when
   // the bus cannot hold the constant; the device refuses that policy then).
-  words.clear();
+  std::vector<std::uint64_t> words;
   for (const specular::Constants constants : specular::every_constants) {
     if (words.size() != 2 * static_cast<std::size_t>(constants)) throw std::logic_error("constants order");
     std::uint64_t h = 0, a = 0;
@@ -202,7 +170,7 @@ code_t as_code(std::uint64_t bits, const specular::FixedFormat& format) {
 int check_dump(const Options& o) {
   const Formats f(o.widths);
   const specular::arith::Rom5Table rom5(f);
-  const auto rom38 = rom38_banks(f, o.bank_bits);
+  const auto rom38 = specular::rom38_bank_tables(f, o.bank_bits);
   const std::size_t bank_words = static_cast<std::size_t>(f.rom38_words());
   const std::size_t rom38_total = bank_words << o.bank_bits;
 

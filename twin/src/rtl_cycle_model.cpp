@@ -7,9 +7,12 @@
 #include <verilated.h>
 
 #include "Vspecular_device_fast.h"
+#include "Vspecular_device_fast___024root.h"
 #include "Vspecular_device_w20.h"
+#include "Vspecular_device_w20___024root.h"
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
+#include "rom_loader.h"
 #include "same_formats.h"
 
 namespace specular {
@@ -47,6 +50,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
  public:
   VerilatedEngine(const Config& config, const Formats& formats)
       : formats_(formats), top_(&context_) {
+    load_rom_words(*top_.rootp, formats);
     top_.cfg_literal = config.saturation == Saturation::literal;
     top_.cfg_rom38_bank = rom38_bank(config);
     top_.pin19_h = static_cast<std::uint32_t>(low_bits(pin19_code(config), formats.mux4.width()));

@@ -1,6 +1,7 @@
 #include "rtl_model.h"  // Verilator's headers first (see there)
 
 #include "Vspecular_device_cc.h"
+#include "Vspecular_device_cc___024root.h"
 
 #include "specular/twin/rtl_device.h"
 

@@ -14,6 +14,7 @@
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_device_base.h"
+#include "rom_loader.h"
 
 namespace specular {
 
@@ -38,7 +39,8 @@ struct RtlDeviceBase::Verilated {
   virtual void trace(VerilatedVcdC& vcd) = 0;
 };
 
-/// `Top`: the class Verilator made. `Nets`: the twin's own observed nets, with
+/// `Top`: the class Verilator made (its root header included too: the ROMs are written
+/// through top.rootp). `Nets`: the twin's own observed nets, with
 /// `using Device = ...;` (the twin) and
 /// `template <class Top, class Update> void update(Device&, const Top&, const Update&)`
 /// that passes each net's last bits, its bits now and its write to `update`.
@@ -55,6 +57,7 @@ struct RtlModel final : RtlDeviceBase::Verilated {
 
   /// The policies, tied off for the life of the device (configuration inputs).
   explicit RtlModel(const Config& config) {
+    load_rom_words(*top.rootp, Formats(config.widths));
     top.cfg_literal = config.saturation == Saturation::literal;
     top.cfg_rom38_bank = rom38_bank(config);
   }

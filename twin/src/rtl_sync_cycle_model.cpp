@@ -7,8 +7,10 @@
 #include <verilated.h>
 
 #include "Vspecular_device_sync_fast.h"
+#include "Vspecular_device_sync_fast___024root.h"
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
+#include "rom_loader.h"
 #include "same_formats.h"
 
 namespace specular {
@@ -29,6 +31,7 @@ std::uint64_t low_bits(code_t code, int width) {
 class RtlSyncCycleModel::Engine {
  public:
   explicit Engine(const Config& config) : formats_(config.widths), top_(&context_) {
+    load_rom_words(*top_.rootp, formats_);
     top_.cfg_literal = config.saturation == Saturation::literal;
     top_.cfg_rom38_bank = rom38_bank(config);
     top_.pin19_h = static_cast<std::uint32_t>(low_bits(pin19_code(config), formats_.mux4.width()));

@@ -1,6 +1,7 @@
 #include "rtl_model.h"  // Verilator's headers first (see there)
 
 #include "Vspecular_device_sync_cc.h"
+#include "Vspecular_device_sync_cc___024root.h"
 
 #include "specular/twin/rtl_sync_device.h"
 

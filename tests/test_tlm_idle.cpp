@@ -48,6 +48,17 @@ TEST(TlmIdle, IdlePinTargetAdvancesTimeWithoutWork) {
   EXPECT_FALSE(sc_core::sc_pending_activity()) << "an idle target keeps events scheduled";
 }
 
+// The rtl target clocks its verilated model inside the initiator's calls and owns no
+// process: idle, it schedules nothing at all, so time runs over it for free.
+TEST(TlmIdle, IdleRtlTargetSchedulesNothing) {
+  static LegalUseBench bench("bench", Target::rtl, Config{}, period);  // no thread started
+  sc_core::sc_start(1, SC_MS);
+  EXPECT_FALSE(sc_core::sc_pending_activity()) << "an idle rtl target keeps events scheduled";
+  sc_core::sc_start(9, SC_MS);
+  EXPECT_EQ(sc_core::sc_time_stamp(), sc_time(10, SC_MS));
+  EXPECT_FALSE(sc_core::sc_pending_activity());
+}
+
 // One initiator thread: an operation, 1 ms (100 000 periods) of its own work, a second
 // operation, then it ends. sc_start() returns by itself shortly after the second
 // operation, the results equal Core's, and the clock rose only around the operations.

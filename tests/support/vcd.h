@@ -1,5 +1,5 @@
 // A VCD file as GTKWave reads it, for the waveform tests (test_vcd_waveform.cpp: the
-// SystemC model's trace; test_rtl_vcd.cpp: Verilator's trace of the RTL twin).
+// SystemC model's trace; test_rtl_vcd.cpp: Verilator's traces of the RTL twins).
 #pragma once
 
 #include <gtest/gtest.h>

@@ -24,6 +24,7 @@
 #include "specular/report_ids.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "fuzz_bytes.h"
 
 // libsystemc refers to sc_main; libFuzzer's main() runs instead, so it is never called.
 extern "C" int sc_main(int, char**) { return 0; }
@@ -39,20 +40,7 @@ using sc_core::SC_NS;
   std::abort();
 }
 
-/// Reads the input as a little stream of bytes; past its end every read gives 0.
-class Bytes {
- public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  bool empty() const { return at_ >= size_; }
-  std::uint8_t u8() { return at_ < size_ ? data_[at_++] : 0; }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(u8() | (u8() << 8)); }
-  std::uint32_t u32() { return u16() | (static_cast<std::uint32_t>(u16()) << 16); }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t at_ = 0;
-};
+using specular_fuzz::Bytes;
 
 /// Which STATUS cause each refusal must leave (target.h's order of checks).
 bool cause_matches(tlm::tlm_response_status response, ErrorCause cause) {

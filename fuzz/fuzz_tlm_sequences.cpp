@@ -45,6 +45,7 @@
 
 #include "specular/report_ids.h"
 #include "support/legal_use_bench.h"
+#include "fuzz_bytes.h"
 
 // libsystemc refers to sc_main; libFuzzer's main() runs instead, so it is never called.
 extern "C" int sc_main(int, char**) { return 0; }
@@ -61,19 +62,7 @@ using sc_core::SC_NS;
   std::abort();
 }
 
-/// Reads the input as a little stream of bytes; past its end every read gives 0.
-class Bytes {
- public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  bool empty() const { return at_ >= size_; }
-  std::uint8_t u8() { return at_ < size_ ? data_[at_++] : 0; }
-  std::uint32_t u24() { return u8() | (static_cast<std::uint32_t>(u8()) << 8) | (static_cast<std::uint32_t>(u8()) << 16); }
-
- private:
-  const std::uint8_t* data_;
-  std::size_t size_;
-  std::size_t at_ = 0;
-};
+using specular_fuzz::Bytes;
 
 constexpr std::uint32_t region_words = 64;  ///< each thread's part of the batch window
 constexpr std::size_t max_actions = 32;     ///< per input, over all threads

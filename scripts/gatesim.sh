@@ -134,19 +134,28 @@ source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS (per top)
 /usr/bin/python3 "$here/silicon/gatesim_vectors.py" "$specular_tb" "$out" "$policies" "$groups" "$random" \
   > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
 
+# compile_tb T VVP LOG [PROBE_TOP PROBE_FILE]: the testbench at period T for the policy
+# in $constants $normalisation $literal $vectors (the caller's), against the cell models,
+# the ROM macros and the mapped netlist with the SDF; with the hazard probe if given.
+compile_tb() {
+  local T="$1" vvp="$2" log="$3" tops=(-s "$TB_TOP") files=()
+  if [[ $# -ge 5 ]]; then tops+=(-s "$4"); files+=("$5"); fi
+  iverilog -g2005 -gspecify -o "$vvp" "${tops[@]}" -DGATE_LEVEL \
+    "-DSDF_FILE=\"$out/icarus.sdf\"" \
+    "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
+    "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \
+    "-P$TB_TOP.LITERAL=$literal" "-P$TB_TOP.CONSTANTS=$constants" \
+    "-P$TB_TOP.NORMALISATION=$normalisation" ${TB_PARAMS[@]/#/-P$TB_TOP.} \
+    "$OSU018/osu018_stdcells.v" "$out/rom_macros_gatesim.v" "$out/mapped_icarus.v" \
+    "$TB_FILE" "${files[@]}" > "$log" 2>&1
+}
+
 # run_at PERIOD: every policy's vectors at that period; 0 all pass, 1 a mismatch.
 run_at() {
   local T="$1" dir="$out/T$1" status=0
   mkdir -p "$dir"
   while read -r name constants normalisation literal vectors; do
-    if ! iverilog -g2005 -gspecify -o "$dir/$name.vvp" -s "$TB_TOP" -DGATE_LEVEL \
-         "-DSDF_FILE=\"$out/icarus.sdf\"" \
-         "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
-         "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \
-         "-P$TB_TOP.LITERAL=$literal" "-P$TB_TOP.CONSTANTS=$constants" \
-         "-P$TB_TOP.NORMALISATION=$normalisation" ${TB_PARAMS[@]/#/-P$TB_TOP.} \
-         "$OSU018/osu018_stdcells.v" "$out/rom_macros_gatesim.v" "$out/mapped_icarus.v" \
-         "$TB_FILE" > "$dir/$name.compile.log" 2>&1; then
+    if ! compile_tb "$T" "$dir/$name.vvp" "$dir/$name.compile.log"; then
       echo "gatesim.sh: iverilog failed; see $dir/$name.compile.log" >&2
       return 2
     fi
@@ -189,14 +198,7 @@ if [[ -n "$hazards" ]]; then
   }
   for T in "$hazards" "$(echo "$hazards * 2" | bc -l | xargs printf '%.2f')"; do
     mkdir -p "$hz/T$T"
-    iverilog -g2005 -gspecify -o "$hz/T$T/tb.vvp" -s "$TB_TOP" -s "$TB_PROBE_TOP" -DGATE_LEVEL \
-      "-DSDF_FILE=\"$out/icarus.sdf\"" \
-      "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
-      "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \
-      "-P$TB_TOP.LITERAL=$literal" "-P$TB_TOP.CONSTANTS=$constants" \
-      "-P$TB_TOP.NORMALISATION=$normalisation" ${TB_PARAMS[@]/#/-P$TB_TOP.} \
-      "$OSU018/osu018_stdcells.v" "$out/rom_macros_gatesim.v" "$out/mapped_icarus.v" \
-      "$TB_FILE" "$TB_PROBE" > "$hz/T$T/compile.log" 2>&1 \
+    compile_tb "$T" "$hz/T$T/tb.vvp" "$hz/T$T/compile.log" "$TB_PROBE_TOP" "$TB_PROBE" \
       || { echo "gatesim.sh: iverilog failed; see $hz/T$T/compile.log" >&2; exit 1; }
     : > "$hz/T$T/sweep.txt"
     prev_x=""; prev_ok=""

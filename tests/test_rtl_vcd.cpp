@@ -25,6 +25,7 @@
 
 #include "specular/format.h"
 #include "specular/reference.h"
+#include "support/example_csv.h"
 #include "support/scratch.h"
 #include "support/subprocess.h"
 #include "support/vcd.h"
@@ -35,6 +36,8 @@ namespace specular {
 namespace {
 
 using testing_support::code_at;
+using testing_support::Example;
+using testing_support::examples;
 using testing_support::parse_vcd;
 using testing_support::scratch_subdir;
 using testing_support::slurp;
@@ -143,16 +146,6 @@ void expect_timing_table(const Vcd& vcd, const std::string& dev, const TimingTab
     }
 }
 
-/// waveforms/example.csv, written out again: cos, n, R, G, B.
-struct Example {
-  double cos;
-  int n;
-  int rgb[3];
-};
-const std::vector<Example> examples = {{0.9, 10, {200, 100, 50}},
-                                       {0.95, 10, {200, 100, 50}},
-                                       {1, 10, {200, 100, 50}},
-                                       {0.99, 100, {255, 128, 0}}};
 
 /// Register 9 1 T after start (edge) `t0` and at 35↑ (`done`) against the formula on
 /// register 1's quantised cos; pins 24–26 at 35↑ against the double reference (patent
@@ -180,6 +173,24 @@ void expect_register9_and_outputs(const Vcd& vcd, const std::string& dev, std::s
         << "start " << i << " channel " << ch;
 }
 
+/// What both twins' traces show per start (edge) and its 35↑: the start on a rising
+/// clock edge, 35 rising `done_ps` after it, starts at least 2 periods apart, and
+/// register 9 and pins 24–26 as expect_register9_and_outputs() says.
+void expect_starts_and_results(const Vcd& vcd, const std::string& dev,
+                               const std::vector<long long>& starts,
+                               const std::vector<long long>& dones, long long done_ps) {
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const long long t0 = starts[i];
+    EXPECT_EQ(t0 % period_ps, 0) << "start " << i << " on a rising clock edge";
+    EXPECT_EQ(vcd.at(dev + ".pin28_clk", t0), "1");
+    EXPECT_EQ(dones[i] - t0, done_ps) << "start " << i << " → 35↑";
+    if (i + 1 < starts.size()) {
+      EXPECT_GE(starts[i + 1] - t0, 2 * period_ps) << "starts at least 2 periods apart";
+    }
+    expect_register9_and_outputs(vcd, dev, i, t0, dones[i]);
+  }
+}
+
 // ---- the drawn device: spec §3's table, start on a rising clock edge ----------------
 
 const TimingTable spec_table{
@@ -204,16 +215,7 @@ TEST(RtlVcd, TimingTableHalfPeriodByHalfPeriod) {
   const auto dones = vcd.rises(dev + ".pin35_done");
   ASSERT_EQ(starts.size(), examples.size());
   ASSERT_EQ(dones.size(), examples.size());
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    const long long t0 = starts[i];
-    EXPECT_EQ(t0 % period_ps, 0) << "start " << i << " on a rising clock edge";
-    EXPECT_EQ(vcd.at(dev + ".pin28_clk", t0), "1");
-    EXPECT_EQ(dones[i] - t0, 5 * period_ps / 2) << "start → 35↑ is 2.5 periods";
-    if (i + 1 < starts.size()) {
-      EXPECT_GE(starts[i + 1] - t0, 2 * period_ps) << "starts at least 2 periods apart";
-    }
-    expect_register9_and_outputs(vcd, dev, i, t0, dones[i]);
-  }
+  expect_starts_and_results(vcd, dev, starts, dones, 5 * period_ps / 2);  // 2.5 periods
   expect_timing_table(vcd, dev, spec_table, starts);
 }
 
@@ -243,18 +245,11 @@ TEST(RtlSyncVcd, TimingTableHalfPeriodByHalfPeriod) {
   ASSERT_EQ(dones.size(), examples.size());
   std::vector<long long> starts;  // the start edges: a quarter period after start rises
   for (const long long r : start_rises) starts.push_back(r + period_ps / 4);
-  for (std::size_t i = 0; i < starts.size(); ++i) {
-    const long long t0 = starts[i];
-    EXPECT_EQ(t0 % period_ps, 0) << "start " << i << " sampled at a rising clock edge";
-    EXPECT_EQ(vcd.at(dev + ".pin28_clk", t0), "1");
-    EXPECT_EQ(vcd.at(dev + ".pin27_start", t0), "1") << "start held over its edge";
-    EXPECT_EQ(vcd.at(dev + ".pin27_start", t0 + period_ps / 4), "0") << "start falls T/4 after its edge";
-    EXPECT_EQ(dones[i] - t0, 2 * period_ps) << "start edge → 35↑ is 2 periods";
-    if (i + 1 < starts.size()) {
-      EXPECT_GE(starts[i + 1] - t0, 2 * period_ps) << "starts at least 2 periods apart";
-    }
-    expect_register9_and_outputs(vcd, dev, i, t0, dones[i]);
+  for (const long long t0 : starts) {
+    EXPECT_EQ(vcd.at(dev + ".pin27_start", t0), "1") << "start held over its edge at " << t0;
+    EXPECT_EQ(vcd.at(dev + ".pin27_start", t0 + period_ps / 4), "0") << "start falls T/4 after its edge at " << t0;
   }
+  expect_starts_and_results(vcd, dev, starts, dones, 2 * period_ps);  // 2 periods from the edge
   expect_timing_table(vcd, dev, sync_table, starts);
 }
 

@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "support/example_csv.h"
 #include "support/scratch.h"
 #include "support/subprocess.h"
 #include "support/vcd.h"
@@ -34,6 +35,8 @@ namespace {
 const std::string tb = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_tb";
 const fs::path source_dir = SPECULAR_SOURCE_DIR;
 using specular::testing_support::scratch_subdir;
+using specular::testing_support::Example;
+using specular::testing_support::examples;
 
 using specular::testing_support::code_at;
 using specular::testing_support::slurp;
@@ -78,16 +81,6 @@ const std::vector<Shown>& shown_buses() {
 }
 std::string without_range(const std::string& name) { return name.substr(0, name.find('[')); }
 
-/// waveforms/example.csv, written out again: cos, n, R, G, B.
-struct Example {
-  double cos;
-  int n;
-  int rgb[3];
-};
-const std::vector<Example> examples = {{0.9, 10, {200, 100, 50}},
-                                       {0.95, 10, {200, 100, 50}},
-                                       {1, 10, {200, 100, 50}},
-                                       {0.99, 100, {255, 128, 0}}};
 /// The formula on register 1's quantised cos (U1.16), clamped at 0 (the default policy).
 double formula_a(const Example& e) {
   const double cos_q = std::round(e.cos * 65536) / 65536;

@@ -340,7 +340,8 @@ TEST_P(Integration, InterruptWorksUnboundThroughItsCallback) {
       SPECULAR_HAS_PROCESS(Top);
       if (kind == Kind::lt) target = std::make_unique<SpecularLtTarget>("ip");
       else if (kind == Kind::pin) target = std::make_unique<SpecularPinTarget>("ip");
-      else target = std::make_unique<SpecularRtlTarget>("ip");
+      else if (kind == Kind::rtl) target = std::make_unique<SpecularRtlTarget>("ip");
+      else target = std::make_unique<SpecularRtlSyncTarget>("ip");
       socket.bind(target->socket);  // done_irq: not bound
       target->on_done_irq([this](bool level) { edges.emplace_back(sc_core::sc_time_stamp(), level); });
       SC_THREAD(program);
@@ -386,8 +387,8 @@ TEST_P(Integration, InterruptWorksUnboundThroughItsCallback) {
   EXPECT_EQ(top->edges[1].first, top->acknowledged);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTarget, Integration, testing::Values(Kind::lt, Kind::pin, Kind::rtl),
-                         kind_name);
+INSTANTIATE_TEST_SUITE_P(EveryTarget, Integration,
+                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync), kind_name);
 
 // SpecularDriver names the response that failed, and STATUS's cause.
 TEST(IntegrationDriver, TransportErrorNamesTheFailedResponse) {

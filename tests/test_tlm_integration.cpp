@@ -452,6 +452,17 @@ INSTANTIATE_TEST_SUITE_P(
              (std::get<1>(info.param) ? "_strict" : "");
     });
 
+// The RAM holds every operation's results up to --operations' limit (64 KiB held 5461).
+TEST(SocPlatformCommandLine, RunsMoreOperationsThanTheFirstRamHeld) {
+  const std::string exe = std::string(SPECULAR_BINARY_DIR) + "/examples/soc_platform/soc_platform";
+  const auto dir = testing_support::fresh_directory("run");
+  const auto outcome = testing_support::run_command(
+      "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe + "' --target lt --strict --operations 6000", dir);
+  EXPECT_EQ(outcome.status, 0) << outcome.out << outcome.err;
+  EXPECT_NE(outcome.out.find("6000/6000 operations equal to Core, 6000 interrupts"), std::string::npos)
+      << outcome.out;
+}
+
 TEST(SocPlatformCommandLine, BadArgumentsAreNamedWithTheAllowedValues) {
   const std::string exe = std::string(SPECULAR_BINARY_DIR) + "/examples/soc_platform/soc_platform";
   const auto dir = testing_support::fresh_directory("run");

@@ -19,7 +19,8 @@ namespace {
 int usage(const std::string& problem) {
   std::cerr << "soc_platform: " << problem << "\n"
             << "usage: soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]"
-               "  (N in 1..100000)\n";
+               "  (N in 1.."
+            << soc::max_operations << ")\n";
   return 2;
 }
 
@@ -45,8 +46,10 @@ int sc_main(int argc, char* argv[]) {
       const std::string value = argv[++i];
       char* end = nullptr;
       operations = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || operations < 1 || operations > 100000)
-        return usage("--operations '" + value + "' is not a whole number in 1..100000");
+      if (value.empty() || *end != '\0' || operations < 1 ||
+          operations > static_cast<long>(soc::max_operations))
+        return usage("--operations '" + value + "' is not a whole number in 1.." +
+                     std::to_string(soc::max_operations));
     } else if (arg == "--strict") {
       strict = true;
     } else {

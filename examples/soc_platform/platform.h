@@ -41,7 +41,11 @@
 namespace soc {
 
 constexpr std::uint64_t ram_base = 0x00000000;
-constexpr std::uint64_t ram_bytes = 0x10000;
+constexpr std::size_t max_operations = 100000;  ///< soc_platform --operations' limit
+/// 12 bytes of results per operation: room for max_operations (it was 64 KiB, which
+/// made a run of more than 5461 operations fail with an address error).
+constexpr std::uint64_t ram_bytes = 0x200000;
+static_assert(12 * max_operations <= ram_bytes, "the RAM holds every operation's results");
 constexpr std::uint64_t ip_base = 0x10000000;
 
 enum class Target { lt, pin, rtl, rtl_sync };

@@ -7,7 +7,9 @@
 #      not as a SYSTEM header;
 #   3. configures, builds and runs examples/consumer with find_package(SpecularUnit)
 #      (COMPONENTS rtl when the build has the twin) against that prefix: the ten-line
-#      example, and the example SoC platform with each target (lt, pin, rtl);
+#      example, a plain int main() on SpecularUnit::core that must need no SystemC
+#      library, and the example SoC platform with each target (lt, pin, rtl, rtl-sync),
+#      each also under its strict initiator (--strict: the delay never shrinks);
 #   4. configures, builds and runs the same consumer with add_subdirectory on the
 #      source tree (lt and pin: the twin's build is not repeated there).
 # Usage: scripts/consumer_check.sh [BUILD_DIR]   (default: build, relative to the repo)
@@ -26,7 +28,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/specular_consumer.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 rtl=$(sed -n 's/^SPECULAR_BUILD_RTL:BOOL=//p' "$build/CMakeCache.txt")
-case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl" ;; *) rtl=OFF; targets="lt pin" ;; esac
+case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl rtl-sync" ;; *) rtl=OFF; targets="lt pin" ;; esac
 
 echo "== install $build, move it to $work/prefix (rtl component: $rtl)"
 cmake --build "$build" --target specular -j "$jobs"
@@ -44,7 +46,7 @@ if named=$( (grep -rlF --include='*.cmake' -e "$build/" -e "$work/install_first"
 fi
 (cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
 echo "   ... $(wc -l <"$work/files.txt") files"
-unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake)$' \
+unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake)$' \
              "$work/files.txt" || true)
 if [[ -n "$unexpected" ]]; then
   echo "consumer_check: FAIL: the install holds more than the IP:" >&2
@@ -52,6 +54,7 @@ if [[ -n "$unexpected" ]]; then
   exit 1
 fi
 grep -q '^\./include/specular/specular\.h$' "$work/files.txt"
+grep -q '^\./lib[^/]*/libspecular_core\.a$' "$work/files.txt"  # SpecularUnit::core (issue 29)
 if [[ $rtl == ON ]]; then grep -q '^\./include/specular/twin/rtl_target\.h$' "$work/files.txt"; fi
 
 echo "== every installed header alone, -Wall -Wextra -Wpedantic -Werror, not SYSTEM"
@@ -74,10 +77,19 @@ run_platforms() {  # $1: the consumer's build folder; the rest: targets
   local dir=$1
   shift
   SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$dir/consumer"
+  # ---- issue 29: the kernel-free core in a plain int main(), no SystemC library ----
+  "$dir/consumer_core" | tail -1
+  if readelf -d "$dir/consumer_core" | grep -q 'NEEDED.*libsystemc'; then
+    echo "consumer_check: FAIL: consumer_core (SpecularUnit::core only) needs libsystemc" >&2
+    exit 1
+  fi
+  # ---- each target also under the strict initiator (--strict) ----
   for target in "$@"; do
-    SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$dir/consumer_platform" --target "$target" 2>&1 |
-      grep -v 'Simulation stopped by user' | sed '/^$/d'
-    [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "consumer_check: FAIL: soc_platform --target $target" >&2; exit 1; }
+    for strict in "" --strict; do
+      SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$dir/consumer_platform" --target "$target" $strict 2>&1 |
+        grep -v 'Simulation stopped by user' | sed '/^$/d'
+      [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "consumer_check: FAIL: soc_platform --target $target $strict" >&2; exit 1; }
+    done
   done
 }
 
@@ -90,7 +102,7 @@ run_platforms "$work/installed" $targets
 echo "== consumer with add_subdirectory on $root (targets: lt pin)"
 cmake -S "$root/examples/consumer" -B "$work/subdir" -DCMAKE_BUILD_TYPE=Release \
       -DSPECULAR_SOURCE_TREE="$root" -DSPECULAR_CONSUMER_RTL=OFF >"$work/configure2.log"
-cmake --build "$work/subdir" --target consumer consumer_platform -j "$jobs" >"$work/build2.log"
+cmake --build "$work/subdir" --target consumer consumer_core consumer_platform -j "$jobs" >"$work/build2.log"
 run_platforms "$work/subdir" lt pin
 
 echo "consumer_check: PASS (installed package with targets $targets, add_subdirectory)"

@@ -104,6 +104,24 @@ std::string recorded(const fs::path& prefix, const std::string& name) {
   return m[1].str();
 }
 
+/// The installed package's record rewritten to say it was built with `s`, a CMake
+/// package at `dir`: a build made with a SystemC this machine may not have.
+void rewrite_record(const fs::path& prefix, const Systemc& s, const fs::path& dir) {
+  const fs::path config = config_file(prefix);
+  std::string text = slurp(config);
+  const auto rewrite = [&text](const std::string& name, const std::string& value) {
+    const std::regex line("set\\(SpecularUnit_SYSTEMC_" + name + " \"[^\"]*\"\\)");
+    ASSERT_TRUE(std::regex_search(text, line)) << name;
+    text = std::regex_replace(text, line, "set(SpecularUnit_SYSTEMC_" + name + " \"" + value + "\")");
+  };
+  rewrite("FOUND_BY", "CMake package");
+  rewrite("LOCATION", dir.string());
+  rewrite("VERSION", s.version());
+  rewrite("CXX", std::to_string(s.cplusplus / 100 % 100));
+  rewrite("API", s.api());
+  write_file(config, text);
+}
+
 /// A fake SystemC `s` under `root`: headers, a library defining only its check symbol,
 /// and Accellera's CMake package files. Returns its SystemCLanguage_DIR.
 fs::path fake_systemc(const fs::path& root, const Systemc& s) {
@@ -271,6 +289,23 @@ TEST(PackageSystemC, RefusesSystemCLanguageDirOfTheSameVersionBuiltForAnotherSta
       << message;
 }
 
+// Built with a SystemC CMake package (here a fake, the record rewritten to name it), consumed
+// naming only the package's prefix: the package finds that one, not the machine's own.
+TEST(PackageSystemC, FindsTheRecordedCMakePackageBeforeTheMachinesOwnSystemC) {
+  const fs::path dir = scratch_subdir("run");
+  const fs::path prefix = install(dir);
+  const Systemc built = other_version();
+  const fs::path built_dir = fake_systemc(dir / "built", built);
+  rewrite_record(prefix, built, built_dir);
+  const Outcome r = configure(dir, "-DCMAKE_PREFIX_PATH=" + shell_quoted(prefix));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("SpecularUnit: SystemC " + built.version() + " for " + built.standard() +
+                       " (" + built.api() + ", CMake package at " + built_dir.string() +
+                       "), the one it was built with"),
+            std::string::npos)
+      << r.out;
+}
+
 // The issue's case: built with a SystemC this machine no longer has (the record rewritten
 // to name one at a folder that does not exist); the package finds the machine's own.
 TEST(PackageSystemC, RefusesTheSystemCItFindsWhenTheOneItWasBuiltWithIsGone) {
@@ -278,18 +313,7 @@ TEST(PackageSystemC, RefusesTheSystemCItFindsWhenTheOneItWasBuiltWithIsGone) {
   const fs::path prefix = install(dir);
   const Systemc own = this_systemc(), gone = other_version();
   const fs::path gone_dir = dir / "gone/lib/cmake/SystemCLanguage";
-  const fs::path config = config_file(prefix);
-  std::string text = slurp(config);
-  const auto rewrite = [&text](const std::string& name, const std::string& value) {
-    const std::regex line("set\\(SpecularUnit_SYSTEMC_" + name + " \"[^\"]*\"\\)");
-    ASSERT_TRUE(std::regex_search(text, line)) << name;
-    text = std::regex_replace(text, line, "set(SpecularUnit_SYSTEMC_" + name + " \"" + value + "\")");
-  };
-  rewrite("FOUND_BY", "CMake package");
-  rewrite("LOCATION", gone_dir.string());
-  rewrite("VERSION", gone.version());
-  rewrite("API", gone.api());
-  write_file(config, text);
+  rewrite_record(prefix, gone, gone_dir);
   const Outcome r = configure(dir, "-DCMAKE_PREFIX_PATH=" + shell_quoted(prefix));
   expect_one_refusal(r);
   const std::string message = flat(r.err);

@@ -181,8 +181,16 @@ fs::path consumer_source(const fs::path& dir) {
 }
 
 Outcome configure(const fs::path& dir, const std::string& arguments) {
+  // A sanitized build's library needs the sanitizers' runtime in the consumer's link too.
+  const std::string sanitize = cache_value("SPECULAR_SANITIZE");
+  const std::string flags =
+      sanitize == "ON" || sanitize == "TRUE" || sanitize == "1"
+          ? " '-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined'"
+            " '-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined'"
+          : "";
   return run_command(cmake() + " -S " + shell_quoted(consumer_source(dir)) + " -B " +
-                         shell_quoted(dir / "build") + " -DCMAKE_BUILD_TYPE=Release " + arguments,
+                         shell_quoted(dir / "build") + " -DCMAKE_BUILD_TYPE=Release" + flags +
+                         " " + arguments,
                      dir, "configure");
 }
 

@@ -234,6 +234,12 @@ class JsonReport : public Report {
     worst("max_norm_error", s.norm, true);
     worst("max_norm_exact_error", s.norm_exact, false);
     worst("max_out_error", s.out, true);
+    if (!s.failure_traces.empty() || s.failure_traces_left_out > 0) {
+      out_ << "    \"failure_traces\": [";
+      for (std::size_t i = 0; i < s.failure_traces.size(); ++i)
+        out_ << (i ? ", \"" : "\"") << escape(s.failure_traces[i]) << '"';
+      out_ << "], \"failure_traces_left_out\": " << s.failure_traces_left_out << ",\n";
+    }
     out_ << "    \"cycles_min\": ";
     put_real(out_, s.cycles_min);
     out_ << ", \"cycles_max\": ";
@@ -311,6 +317,13 @@ void write_summary_text(std::ostream& out, const Summary& s, const RunDescriptio
                                  : " (measured on the pins)")
         << '\n';
   }
+  if (!s.failure_traces.empty()) {
+    out << "  waveforms of failing operations (each with the one before it; times are the replay's):\n";
+    for (const std::string& file : s.failure_traces) out << "    " << file << '\n';
+  }
+  if (s.failure_traces_left_out > 0)
+    out << "  " << s.failure_traces_left_out
+        << " more failing operation(s) not traced (--trace-failures-max)\n";
   out << "  tolerances: approx 2^-10; norm 2^-10*max(1,K); out 2^-10*max(1,K)*I + 1 LSB\n";
   if (seconds >= 0)
     out << "  run time " << std::fixed << std::setprecision(2) << seconds << " s\n";

@@ -1,12 +1,16 @@
 #include "testbench.h"
 
 #include <chrono>
+#include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "input.h"
 #include "options.h"
 #include "output_file.h"
+#include "progress.h"
 #include "report.h"
 #include "run_models.h"
 #include "scoreboard.h"
@@ -68,6 +72,17 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
     throw UsageError(e.what());
   }
   Plan plan = make_plan(o, formats);
+  if (o.trace_window && o.trace_first >= plan.source->size())
+    throw UsageError("--trace-ops: FIRST = " + std::to_string(o.trace_first) +
+                     " is outside the run's operations [0, " +
+                     std::to_string(plan.source->size() - 1) + "]");
+  if (!o.failure_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.failure_dir, ec);
+    if (ec || !std::filesystem::is_directory(o.failure_dir))
+      throw UsageError("--trace-failures: cannot make the directory '" + o.failure_dir + "'" +
+                       (ec ? ": " + ec.message() : std::string()));
+  }
   std::optional<AtomicOutputStream> output_file;
   if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");
   std::optional<AtomicFile> vcd_file;
@@ -80,6 +95,13 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   settings.clock_period_ps = o.clock_period_ps;
   if (vcd_file) settings.vcd_base = strip_vcd_suffix(vcd_file->temp_path());
   settings.real_views = o.real_views;
+  settings.trace_window = o.trace_window;
+  settings.trace_first = o.trace_first;
+  settings.trace_count = o.trace_count;
+  // Failing operations of the batch just compared, to be replayed into their own files.
+  std::vector<std::pair<std::uint64_t, std::string>> replays;
+  if (!o.failure_dir.empty())
+    settings.replays = [&replays] { return std::exchange(replays, {}); };
 
   std::ostream& report_stream = output_file ? output_file->stream() : out;
   const std::unique_ptr<Report> report = make_report(o.format, report_stream, err);
@@ -93,6 +115,8 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   report->begin(description);
 
   Scoreboard scoreboard(o.config, latency_cycles(settings.model));
+  std::uint64_t index = 0;  // of the next result in the run
+  Progress progress(std::cerr, plan.source->size(), &err == &std::cerr && progress_wanted(o.quiet));
   std::vector<Stimulus> stimuli;  // the chunk in flight, aligned with its operands
   const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
     chunk.clear();
@@ -116,12 +140,26 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
       const Comparison c = scoreboard.compare(stimuli[i], result, measured);
       scoreboard.record(c);
       report->row(c);
+      if (!c.pass() && !o.failure_dir.empty()) {
+        Summary& summary = scoreboard.summary();
+        if (summary.failure_traces.size() < o.failure_max) {
+          const std::string base =
+              (std::filesystem::path(o.failure_dir) / ("op_" + std::to_string(index))).string();
+          replays.emplace_back(index, base);
+          summary.failure_traces.push_back(base + ".vcd");
+        } else {
+          ++summary.failure_traces_left_out;
+        }
+      }
+      ++index;
     }
+    progress.update(index);
     if (!report_stream) throw UsageError("cannot write the report (disk full?)");
   };
 
   const auto started = std::chrono::steady_clock::now();
   run_operations(settings, source, sink);
+  progress.finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report->end(scoreboard.summary(), seconds);

@@ -153,6 +153,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
       }
       ++index;
     }
+    report->flush();
     progress.update(index);
     if (!report_stream) throw UsageError("cannot write the report (disk full?)");
   };

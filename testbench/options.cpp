@@ -28,7 +28,7 @@ const std::map<std::string, std::string>& valued_options() {
       {"--width", "NAME=VALUE, NAME one of: " + width_names()},
       {"--clock-period", "a time, a multiple of 4 ps in [4 ps, 1 ms], e.g. 10ns"},
       {"--vcd", "a file name"},
-      {"--format", "one of: text, csv, json"},
+      {"--format", "one of: text, csv, json, jsonl"},
       {"--output", "a file name"},
       {"--trace-ops", "FIRST:COUNT, operations FIRST .. FIRST+COUNT-1 (from 0), COUNT >= 1"},
       {"--trace-failures", "a directory"},
@@ -310,9 +310,14 @@ Model and device:
                             in [4 ps, 1 ms]
 
 Output:
-  --format text|csv|json    text (default): a table and a summary (a sweep prints the
+  --format text|csv|json|jsonl
+                            text (default): a table and a summary (a sweep prints the
                             summary only); csv: one row per computation, summary on
-                            standard error; json: {settings, results[], summary}
+                            standard error; json: {settings, results[], summary};
+                            jsonl: JSON Lines, {tool, settings}, one line per result,
+                            {summary}: readable while the run goes (rows are written
+                            after each batch of 4096; on standard output, as --output
+                            renames its file only when the run is complete)
   --output FILE             write there instead of standard output (written to a
                             temporary file and renamed when complete)
   --vcd FILE                pin model: write a VCD of every pin and net (time unit 1 ps);

@@ -19,6 +19,7 @@ const char* to_string(OutputFormat format) {
     case OutputFormat::text: return "text";
     case OutputFormat::csv: return "csv";
     case OutputFormat::json: return "json";
+    case OutputFormat::jsonl: return "jsonl";
   }
   return "?";
 }
@@ -27,7 +28,8 @@ OutputFormat parse_output_format(const std::string& text) {
   if (text == "text") return OutputFormat::text;
   if (text == "csv") return OutputFormat::csv;
   if (text == "json") return OutputFormat::json;
-  throw UsageError("--format = '" + text + "' is not one of: text, csv, json");
+  if (text == "jsonl") return OutputFormat::jsonl;
+  throw UsageError("--format = '" + text + "' is not one of: text, csv, json, jsonl");
 }
 
 std::string hex_code(code_t code, int width) {
@@ -421,6 +423,70 @@ class JsonReport : public Report {
   bool first_ = true;
 };
 
+// ---- JSON Lines ---------------------------------------------------------------
+/// The JSON report's objects one to a line, for a reader that follows the run as it
+/// goes (rows reach the stream after each batch): a line {"tool", "settings"}, a line
+/// per result (the objects of the JSON's "results"), a line {"summary"}. The JSON
+/// writer writes into a buffer here, and its layout is folded into lines.
+class JsonLinesReport : public Report {
+ public:
+  explicit JsonLinesReport(std::ostream& out) : out_(out) {}
+  void begin(const RunDescription& run) override {
+    inner_.begin(run);
+    std::string text = take();
+    text = text.substr(0, text.rfind(",\n  \"results\": ["));
+    out_ << one_line(text) << "}\n";
+  }
+  void row(const Comparison& c) override { inner_.row(c); }
+  void flush() override {
+    inner_.flush();
+    rows_out();
+    out_.flush();
+  }
+  void end(const Summary& summary, double seconds) override {
+    inner_.flush();
+    rows_out();
+    inner_.end(summary, seconds);
+    const std::string text = take();
+    out_ << '{' << one_line(text.substr(text.find("\"summary\""))) << '\n';
+  }
+
+ private:
+  std::string take() {
+    std::string text = capture_.str();
+    capture_.str(std::string());
+    return text;
+  }
+  /// Rows come as "\n    {...}" or ",\n    {...}": one a line.
+  void rows_out() {
+    const std::string text = take();
+    std::size_t at = 0;
+    while ((at = text.find('{', at)) != std::string::npos) {
+      const std::size_t end = text.find("\n", at);
+      const std::size_t stop = end == std::string::npos ? text.size() : end;
+      const std::size_t close = text[stop - 1] == ',' ? stop - 1 : stop;
+      out_.write(text.data() + at, static_cast<std::streamsize>(close - at));
+      out_ << '\n';
+      at = stop;
+    }
+  }
+  /// Newlines and the indentation after them removed (strings hold none: escaped).
+  static std::string one_line(const std::string& text) {
+    std::string line;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      if (text[i] != '\n') {
+        line += text[i];
+        continue;
+      }
+      while (i + 1 < text.size() && text[i + 1] == ' ') ++i;
+    }
+    return line;
+  }
+  std::ostream& out_;
+  std::ostringstream capture_;
+  JsonReport inner_{capture_};
+};
+
 void worst_line(std::ostream& out, const char* label, const Worst& w, const char* note) {
   out << "  " << std::left << std::setw(26) << label << std::right << " = " << std::setprecision(4)
       << std::scientific << w.error << std::defaultfloat << " at cos " << std::setprecision(8)
@@ -476,6 +542,7 @@ std::unique_ptr<Report> make_report(OutputFormat format, std::ostream& out, std:
     case OutputFormat::text: return std::make_unique<TextReport>(out);
     case OutputFormat::csv: return std::make_unique<CsvReport>(out, side);
     case OutputFormat::json: return std::make_unique<JsonReport>(out);
+    case OutputFormat::jsonl: return std::make_unique<JsonLinesReport>(out);
   }
   return nullptr;
 }

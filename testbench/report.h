@@ -12,9 +12,9 @@
 namespace specular {
 namespace tb {
 
-enum class OutputFormat { text, csv, json };
+enum class OutputFormat { text, csv, json, jsonl };
 const char* to_string(OutputFormat format);
-/// "text", "csv" or "json"; throws UsageError naming the value and the choices.
+/// "text", "csv", "json" or "jsonl"; throws UsageError naming the value and the choices.
 OutputFormat parse_output_format(const std::string& text);
 
 /// What the run was, for the report's header.

@@ -1,6 +1,13 @@
 #include "testbench.h"
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -55,6 +62,46 @@ Plan make_plan(const Options& o, const Formats& formats) {
   return plan;
 }
 
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// GTKWave's converter, found on PATH (empty: not installed).
+std::string find_vcd2fst() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  for (std::size_t at = 0; at <= dirs.size();) {
+    const std::size_t colon = std::min(dirs.find(':', at), dirs.size());
+    const std::filesystem::path candidate =
+        std::filesystem::path(dirs.substr(at, colon - at).empty() ? "." : dirs.substr(at, colon - at)) /
+        "vcd2fst";
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    at = colon + 1;
+  }
+  return "";
+}
+
+/// The trace as FST: GTKWave's vcd2fst converts the VCD the run wrote (docs/performance.md
+/// has its cost beside the VCD's), which is then removed.
+void convert_to_fst(const std::string& vcd2fst, const std::string& vcd, const std::string& fst) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+    }
+    ::execl(vcd2fst.c_str(), "vcd2fst", vcd.c_str(), fst.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = -1;
+  if (child > 0) ::waitpid(child, &status, 0);
+  std::remove(vcd.c_str());
+  if (child < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("vcd2fst could not convert the trace to '" + fst + "'");
+}
+
 std::string strip_vcd_suffix(const std::string& path) {
   const std::string suffix = ".vcd";
   if (path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0)
@@ -86,14 +133,22 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   std::optional<AtomicOutputStream> output_file;
   if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");
   std::optional<AtomicFile> vcd_file;
+  // A name ending in .fst asks for FST: the run writes a VCD, GTKWave's vcd2fst
+  // converts it when the run is over.
+  const bool fst = ends_with(o.vcd_path, ".fst");
+  const std::string vcd2fst = fst ? find_vcd2fst() : "";
+  if (fst && vcd2fst.empty())
+    throw UsageError("--vcd " + o.vcd_path + ": an FST trace needs GTKWave's vcd2fst (Debian "
+                     "package gtkwave: scripts/setup.sh --gtkwave); give a .vcd name instead");
   // SystemC's VCD writer appends ".vcd" to the name it is given.
-  if (!o.vcd_path.empty()) vcd_file.emplace(o.vcd_path, "--vcd", ".vcd");
+  if (!o.vcd_path.empty()) vcd_file.emplace(o.vcd_path, "--vcd", fst ? ".fst" : ".vcd");
 
   RunSettings settings;
   settings.model = o.model;
   settings.config = o.config;
   settings.clock_period_ps = o.clock_period_ps;
-  if (vcd_file) settings.vcd_base = strip_vcd_suffix(vcd_file->temp_path());
+  if (vcd_file)  // beside the temporary file: its name less .vcd (.fst: plus .trace)
+    settings.vcd_base = fst ? vcd_file->temp_path() + ".trace" : strip_vcd_suffix(vcd_file->temp_path());
   settings.real_views = o.real_views;
   settings.trace_window = o.trace_window;
   settings.trace_first = o.trace_first;
@@ -168,6 +223,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   if (!report_stream) throw UsageError("cannot write the report (disk full?)");
 
   if (output_file) output_file->commit();
+  if (vcd_file && fst) convert_to_fst(vcd2fst, settings.vcd_base + ".vcd", vcd_file->temp_path());
   if (vcd_file) vcd_file->commit();
   return scoreboard.summary().pass() ? exit_pass : exit_out_of_tolerance;
 }

@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
-#include <stdexcept>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <type_traits>
 
 #include <tlm_utils/simple_initiator_socket.h>
@@ -86,7 +86,7 @@ void stamp_initial_values(const std::string& path, std::uint64_t ps) {
       }
       out << line << '\n';
     }
-    out << in.rdbuf();
+    if (in.peek() != std::char_traits<char>::eof()) out << in.rdbuf();
     if (!out) throw std::runtime_error("cannot write the trace '" + path + "' (disk full?)");
   }
   if (std::rename(stamped.c_str(), path.c_str()) != 0)

@@ -1,7 +1,7 @@
 // A progress line on standard error for runs that take a while: operations done,
 // total, rate and time left, rewritten in place at most twice a second. Shown only
 // when standard error is a terminal and --quiet is not given, so logs, pipes and CI
-// output stay as they were.
+// output stay as they were (and not while rows are printed on the same terminal).
 #pragma once
 
 #include <chrono>

@@ -171,7 +171,11 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
 
   Scoreboard scoreboard(o.config, latency_cycles(settings.model));
   std::uint64_t index = 0;  // of the next result in the run
-  Progress progress(std::cerr, plan.source->size(), &err == &std::cerr && progress_wanted(o.quiet));
+  // Rows printed on the same terminal would land in the middle of the progress line.
+  const bool rows_on_terminal = !output_file && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1 &&
+                                (o.format != OutputFormat::text || description.text_rows);
+  Progress progress(std::cerr, plan.source->size(),
+                    &err == &std::cerr && !rows_on_terminal && progress_wanted(o.quiet));
   std::vector<Stimulus> stimuli;  // the chunk in flight, aligned with its operands
   const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
     chunk.clear();

@@ -149,6 +149,13 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   settings.clock_period_ps = o.clock_period_ps;
   if (vcd_file)  // beside the temporary file: its name less .vcd (.fst: plus .trace)
     settings.vcd_base = fst ? vcd_file->temp_path() + ".trace" : strip_vcd_suffix(vcd_file->temp_path());
+  // The VCD an FST is converted from goes, whatever happens to the run.
+  struct RemovedAtExit {
+    std::string path;
+    ~RemovedAtExit() {
+      if (!path.empty()) std::remove(path.c_str());
+    }
+  } fst_source{fst ? settings.vcd_base + ".vcd" : std::string()};
   settings.real_views = o.real_views;
   settings.trace_window = o.trace_window;
   settings.trace_first = o.trace_first;

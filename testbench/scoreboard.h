@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstddef>
+#include <string>
+#include <vector>
 
 #include "input.h"
 #include "specular/core.h"
@@ -48,6 +50,8 @@ struct Summary {
   Worst norm_exact;               ///< |norm − norm_exact| (the formula's own error; no bound)
   Worst out;                      ///< max over channels of |out − out_ref|
   double cycles_min = 0, cycles_max = 0;
+  std::vector<std::string> failure_traces;  ///< --trace-failures: the files written
+  std::size_t failure_traces_left_out = 0;  ///< failures past --trace-failures-max
   bool pass() const { return count > 0 && failures == 0; }
 };
 
@@ -61,6 +65,7 @@ class Scoreboard {
   /// Adds a comparison to the summary.
   void record(const Comparison& c);
   const Summary& summary() const { return summary_; }
+  Summary& summary() { return summary_; }
   const Formats& formats() const { return formats_; }
   const Config& config() const { return config_; }
 

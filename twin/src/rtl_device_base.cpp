@@ -66,31 +66,55 @@ void RtlDeviceBase::before_end_of_elaboration() {
   SC_METHOD(evaluate);
   sensitive << pin19_h << pin20_a << pin27_start << pin28_clk << pin29_reset_n
             << pin30_load_n << pin31_load_r << pin32_load_g << pin33_load_b << pin34_carry;
-  if (!vcd_path_.empty()) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
+  if (traceable_) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
 }
 
-void RtlDeviceBase::open_vcd(const std::string& path) {
+void RtlDeviceBase::allow_tracing() {
   if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
     throw std::logic_error(std::string(class_name_) +
-                           "::open_vcd must be called before the simulation starts");
-  vcd_path_ = path;
+                           "::allow_tracing must be called before the simulation starts");
+  traceable_ = true;
   rtl_->context.traceEverOn(true);
 }
 
-void RtlDeviceBase::start_of_simulation() {
-  if (vcd_path_.empty()) return;
+void RtlDeviceBase::open_vcd(const std::string& path) {
+  if (sc_core::sc_get_status() == sc_core::SC_ELABORATION) {
+    vcd_path_ = path;
+    allow_tracing();
+    return;
+  }
+  if (!traceable_ || rtl_->vcd)
+    throw std::logic_error(std::string(class_name_) +
+                           "::open_vcd during the simulation needs allow_tracing() before it "
+                           "and no file open");
+  open_writer(path);
+  // The state the last evaluation left is this instant's: it is dumped here, at the
+  // next evaluation at a later instant (evaluate()).
+  rtl_->last_eval_ps = sc_core::sc_time_stamp().value();
+  rtl_->evaluated = true;
+}
+
+void RtlDeviceBase::open_writer(const std::string& path) {
   rtl_->vcd = std::make_unique<VerilatedVcdC>();
   rtl_->trace(*rtl_->vcd);
   // SystemC's time resolution (1 ps by default) is the waveform's time unit.
   rtl_->vcd->set_time_resolution("1ps");
   rtl_->vcd->set_time_unit("1ps");
-  rtl_->vcd->open(vcd_path_.c_str());
+  rtl_->vcd->open(path.c_str());
 }
 
-void RtlDeviceBase::end_of_simulation() {
+void RtlDeviceBase::close_vcd() {
   if (!rtl_->vcd) return;
   if (rtl_->evaluated) rtl_->vcd->dump(rtl_->last_eval_ps);
   rtl_->vcd->close();
+  rtl_->vcd.reset();
+  rtl_->evaluated = false;
 }
+
+void RtlDeviceBase::start_of_simulation() {
+  if (!vcd_path_.empty()) open_writer(vcd_path_);
+}
+
+void RtlDeviceBase::end_of_simulation() { close_vcd(); }
 
 }  // namespace specular

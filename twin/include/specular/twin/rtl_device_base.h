@@ -39,9 +39,16 @@ class RtlDeviceBase : public DevicePins {
   /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw,
   /// waveforms/specular_rtl_sync.gtkw for the synchronous variant).
   void trace(sc_core::sc_trace_file*) const override {}
-  /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`
-  /// from the start of simulation on. Call before sc_start (std::logic_error after).
+  /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`:
+  /// called before sc_start, from the start of simulation on; called during the
+  /// simulation (after allow_tracing()), from now on, until close_vcd() — a window
+  /// (specular_tb --trace-ops, --trace-failures). std::logic_error otherwise.
   void open_vcd(const std::string& path);
+  /// Before sc_start: let open_vcd() be called later, during the simulation (the pins
+  /// a trace shows as they change are made to wake the model from the start).
+  void allow_tracing();
+  /// Writes the last instant and closes the file open_vcd() opened (if any).
+  void close_vcd();
 
   // ---- what the harness watches (observation outputs both twins have) ----
   wire select36{"select36"};
@@ -77,12 +84,14 @@ class RtlDeviceBase : public DevicePins {
   void start_of_simulation() override;
   void end_of_simulation() override;
   void evaluate();
+  void open_writer(const std::string& path);
 
   const char* class_name_;
   Config config_;
   Formats formats_;
   std::unique_ptr<Verilated> rtl_;
   std::string vcd_path_;
+  bool traceable_ = false;  ///< open_vcd() may be called during the simulation
 };
 
 }  // namespace specular

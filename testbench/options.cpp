@@ -329,7 +329,8 @@ Output:
                             reference number; open it with waveforms/specular_rtl.gtkw
                             (rtl-sync: waveforms/specular_rtl_sync.gtkw).
                             A name ending in .fst gives GTKWave's compressed FST
-                            (converted by GTKWave's vcd2fst when the run ends).
+                            (rtl, rtl-sync: written by Verilator; pin: converted
+                            by GTKWave's vcd2fst when the run ends).
   --trace-ops FIRST:COUNT   with --vcd: trace only operations FIRST .. FIRST+COUNT-1
                             (counted from 0, as in the CSV's rows): the file holds the
                             instants from the first one's inputs to the last one's

@@ -98,7 +98,7 @@ void stamp_initial_values(const std::string& path, std::uint64_t ps) {
 template <class Harness>
 class Tracer {
  public:
-  explicit Tracer(Harness& harness) : harness_(harness) {}
+  Tracer(Harness& harness, const std::string& twin_suffix) : harness_(harness), twin_suffix_(twin_suffix) {}
   ~Tracer() {
     try {
       close();
@@ -108,7 +108,7 @@ class Tracer {
   /// Before sc_start: every trace will come during the simulation.
   void prepare() {
 #ifdef SPECULAR_HAS_RTL_TWIN
-    if constexpr (!std::is_same_v<Harness, PinHarness>) harness_.dut.allow_tracing();
+    if constexpr (!std::is_same_v<Harness, PinHarness>) harness_.dut.allow_tracing(twin_suffix_ == ".fst");
 #endif
   }
   /// `base`: the file name without ".vcd".
@@ -117,7 +117,7 @@ class Tracer {
     open_ = true;
 #ifdef SPECULAR_HAS_RTL_TWIN
     if constexpr (!std::is_same_v<Harness, PinHarness>) {
-      harness_.dut.open_vcd(base + ".vcd");
+      harness_.dut.open_vcd(base + twin_suffix_);
       return;
     }
 #endif
@@ -144,6 +144,7 @@ class Tracer {
 
  private:
   Harness& harness_;
+  std::string twin_suffix_;  ///< ".vcd" or ".fst" (RunSettings::twin_trace_suffix)
   sc_core::sc_trace_file* vcd_ = nullptr;
   bool open_ = false;
   std::string path_;
@@ -160,7 +161,7 @@ class PinDriver : public sc_core::sc_module {
   PinDriver(sc_core::sc_module_name name, Harness& harness, const OperandSource& source,
             const ResultSink& sink, const RunSettings& settings)
       : sc_module(name), harness_(harness), source_(source), sink_(sink), settings_(settings),
-        tracer_(harness) {
+        tracer_(harness, settings.twin_trace_suffix) {
     SPECULAR_HAS_PROCESS(PinDriver);
     SC_THREAD(drive);
     SC_METHOD(close_window);
@@ -285,7 +286,7 @@ void run_on_pins(const RunSettings& settings, const OperandSource& source,
 #ifdef SPECULAR_HAS_RTL_TWIN
   // The twin's waveform is Verilator's own, of the RTL's nets (waveforms/specular_rtl.gtkw).
   if constexpr (std::is_same_v<Harness, RtlHarness> || std::is_same_v<Harness, RtlSyncHarness>) {
-    if (whole_run) harness.dut.open_vcd(settings.vcd_base + ".vcd");
+    if (whole_run) harness.dut.open_vcd(settings.vcd_base + settings.twin_trace_suffix);
     sc_core::sc_start();
     if (driver.failure) std::rethrow_exception(driver.failure);
     return;

@@ -46,6 +46,9 @@ struct RunSettings {
   Config config{};
   std::uint64_t clock_period_ps = 10000;  ///< pin, rtl: period of pin 28; tlm: of its annotation
   std::string vcd_base;          ///< pin, rtl: VCD file name without ".vcd"; empty = no trace
+  /// rtl, rtl-sync: ".fst" has Verilator write FST directly (the twins verilated with
+  /// --trace-fst) into vcd_base + ".fst", windows and replays included; else ".vcd".
+  std::string twin_trace_suffix = ".vcd";
   bool real_views = false;       ///< with a trace: add the *_real views (RealView)
   std::size_t chunk_size = 4096;  ///< operations per batch (memory stays flat)
   /// With vcd_base: trace only operations [trace_first, trace_first + trace_count)

@@ -133,11 +133,14 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   std::optional<AtomicOutputStream> output_file;
   if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");
   std::optional<AtomicFile> vcd_file;
-  // A name ending in .fst asks for FST: the run writes a VCD, GTKWave's vcd2fst
-  // converts it when the run is over.
+  // A name ending in .fst asks for FST: the twins' Verilator writes it directly (their
+  // models verilated with --trace-fst); the pin model writes a VCD that GTKWave's
+  // vcd2fst converts when the run is over (docs/performance.md has both ways measured).
   const bool fst = ends_with(o.vcd_path, ".fst");
-  const std::string vcd2fst = fst ? find_vcd2fst() : "";
-  if (fst && vcd2fst.empty())
+  const bool twin = o.model == Model::rtl || o.model == Model::rtl_sync;
+  const bool convert = fst && !twin;
+  const std::string vcd2fst = convert ? find_vcd2fst() : "";
+  if (convert && vcd2fst.empty())
     throw UsageError("--vcd " + o.vcd_path + ": an FST trace needs GTKWave's vcd2fst (Debian "
                      "package gtkwave: scripts/setup.sh --gtkwave); give a .vcd name instead");
   // SystemC's VCD writer appends ".vcd" to the name it is given.
@@ -147,15 +150,18 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   settings.model = o.model;
   settings.config = o.config;
   settings.clock_period_ps = o.clock_period_ps;
-  if (vcd_file)  // beside the temporary file: its name less .vcd (.fst: plus .trace)
-    settings.vcd_base = fst ? vcd_file->temp_path() + ".trace" : strip_vcd_suffix(vcd_file->temp_path());
+  if (twin && fst) settings.twin_trace_suffix = ".fst";
+  if (vcd_file)  // beside the temporary file: its name less .vcd (.fst: plus .trace, or less .fst)
+    settings.vcd_base = convert ? vcd_file->temp_path() + ".trace"
+                        : fst   ? vcd_file->temp_path().substr(0, vcd_file->temp_path().size() - 4)
+                                : strip_vcd_suffix(vcd_file->temp_path());
   // The VCD an FST is converted from goes, whatever happens to the run.
   struct RemovedAtExit {
     std::string path;
     ~RemovedAtExit() {
       if (!path.empty()) std::remove(path.c_str());
     }
-  } fst_source{fst ? settings.vcd_base + ".vcd" : std::string()};
+  } fst_source{convert ? settings.vcd_base + ".vcd" : std::string()};
   settings.real_views = o.real_views;
   settings.trace_window = o.trace_window;
   settings.trace_first = o.trace_first;
@@ -212,7 +218,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
           const std::string base =
               (std::filesystem::path(o.failure_dir) / ("op_" + std::to_string(index))).string();
           replays.emplace_back(index, base);
-          summary.failure_traces.push_back(base + ".vcd");
+          summary.failure_traces.push_back(base + settings.twin_trace_suffix);
         } else {
           ++summary.failure_traces_left_out;
         }
@@ -234,7 +240,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   if (!report_stream) throw UsageError("cannot write the report (disk full?)");
 
   if (output_file) output_file->commit();
-  if (vcd_file && fst) convert_to_fst(vcd2fst, settings.vcd_base + ".vcd", vcd_file->temp_path());
+  if (vcd_file && convert) convert_to_fst(vcd2fst, settings.vcd_base + ".vcd", vcd_file->temp_path());
   if (vcd_file) vcd_file->commit();
   return scoreboard.summary().pass() ? exit_pass : exit_out_of_tolerance;
 }

@@ -20,6 +20,8 @@ RtlDeviceBase::RtlDeviceBase(sc_core::sc_module_name name, const Config& config,
         "the " + twin + " has no real-valued views: its VCD holds the RTL's own nets as codes "
         "(" + variant.gtkw + " shows them as real numbers)");
   rtl_ = variant.make_model(config);
+  make_model_ = variant.make_model;
+  make_fst_model_ = variant.make_fst_model;
   arith::Rom38Table check(formats_, config);  // a device the core refuses, the twin refuses too
 
   // Done (35) starts high (idle), as the netlist's does, until the first evaluation.
@@ -30,11 +32,11 @@ RtlDeviceBase::~RtlDeviceBase() = default;
 
 void RtlDeviceBase::evaluate() {
   Verilated& v = *rtl_;
-  if (v.vcd) {
+  if (v.writing()) {
     // The waveform holds each instant's settled values: the state left by the last
     // evaluation at an earlier instant is dumped at that instant, before it changes.
     const std::uint64_t now_ps = sc_core::sc_time_stamp().value();
-    if (v.evaluated && now_ps > v.last_eval_ps) v.vcd->dump(v.last_eval_ps);
+    if (v.evaluated && now_ps > v.last_eval_ps) v.dump(v.last_eval_ps);
     v.last_eval_ps = now_ps;
     v.evaluated = true;
   }
@@ -69,24 +71,39 @@ void RtlDeviceBase::before_end_of_elaboration() {
   if (traceable_) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
 }
 
-void RtlDeviceBase::allow_tracing() {
+void RtlDeviceBase::allow_tracing(bool fst) {
   if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
     throw std::logic_error(std::string(class_name_) +
                            "::allow_tracing must be called before the simulation starts");
+  // ---- FST (issue 27): the model verilated with --trace-fst replaces the VCD one
+  // before it has run (its policies tied off again; the pins' channels are taken at
+  // end_of_elaboration, after this).
+  if (fst != rtl_->fst()) rtl_ = fst ? make_fst_model_(config_) : make_model_(config_);
   traceable_ = true;
   rtl_->context.traceEverOn(true);
 }
 
+namespace {
+bool fst_name(const std::string& path) {
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".fst") == 0;
+}
+}  // namespace
+
 void RtlDeviceBase::open_vcd(const std::string& path) {
   if (sc_core::sc_get_status() == sc_core::SC_ELABORATION) {
     vcd_path_ = path;
-    allow_tracing();
+    allow_tracing(fst_name(path));
     return;
   }
-  if (!traceable_ || rtl_->vcd)
+  if (!traceable_ || rtl_->writing())
     throw std::logic_error(std::string(class_name_) +
                            "::open_vcd during the simulation needs allow_tracing() before it "
                            "and no file open");
+  if (fst_name(path) != rtl_->fst())
+    throw std::logic_error(std::string(class_name_) + "::open_vcd('" + path + "'): the model " +
+                           "writes " + (rtl_->fst() ? "FST" : "VCD") +
+                           " (allow_tracing(" + (rtl_->fst() ? "true" : "false") +
+                           ") chose it before the simulation)");
   open_writer(path);
   // The state the last evaluation left is this instant's: it is dumped here, at the
   // next evaluation at a later instant (evaluate()).
@@ -94,20 +111,12 @@ void RtlDeviceBase::open_vcd(const std::string& path) {
   rtl_->evaluated = true;
 }
 
-void RtlDeviceBase::open_writer(const std::string& path) {
-  rtl_->vcd = std::make_unique<VerilatedVcdC>();
-  rtl_->trace(*rtl_->vcd);
-  // SystemC's time resolution (1 ps by default) is the waveform's time unit.
-  rtl_->vcd->set_time_resolution("1ps");
-  rtl_->vcd->set_time_unit("1ps");
-  rtl_->vcd->open(path.c_str());
-}
+void RtlDeviceBase::open_writer(const std::string& path) { rtl_->open_writer(path); }
 
 void RtlDeviceBase::close_vcd() {
-  if (!rtl_->vcd) return;
-  if (rtl_->evaluated) rtl_->vcd->dump(rtl_->last_eval_ps);
-  rtl_->vcd->close();
-  rtl_->vcd.reset();
+  if (!rtl_->writing()) return;
+  if (rtl_->evaluated) rtl_->dump(rtl_->last_eval_ps);
+  rtl_->close_writer();
   rtl_->evaluated = false;
 }
 

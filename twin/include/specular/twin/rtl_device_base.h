@@ -43,10 +43,14 @@ class RtlDeviceBase : public DevicePins {
   /// called before sc_start, from the start of simulation on; called during the
   /// simulation (after allow_tracing()), from now on, until close_vcd() — a window
   /// (specular_tb --trace-ops, --trace-failures). std::logic_error otherwise.
+  /// A name ending in ".fst" gets GTKWave's FST, written by Verilator (the model
+  /// verilated with --trace-fst); during the simulation, only in the format
+  /// allow_tracing() chose.
   void open_vcd(const std::string& path);
   /// Before sc_start: let open_vcd() be called later, during the simulation (the pins
-  /// a trace shows as they change are made to wake the model from the start).
-  void allow_tracing();
+  /// a trace shows as they change are made to wake the model from the start), in FST
+  /// if `fst` (the model verilated with --trace-fst is used from the start), else VCD.
+  void allow_tracing(bool fst = false);
   /// Writes the last instant and closes the file open_vcd() opened (if any).
   void close_vcd();
 
@@ -67,6 +71,7 @@ class RtlDeviceBase : public DevicePins {
     const char* twin_name;   ///< "RTL twin": names the twin in constructor errors
     const char* gtkw;        ///< the GTKWave save file for its VCD
     std::unique_ptr<Verilated> (*make_model)(const Config&);
+    std::unique_ptr<Verilated> (*make_fst_model)(const Config&);  ///< --trace-fst (issue 27)
   };
 
   /// Refuses a Config the model was not verilated for and `real_views` (accepted for
@@ -76,7 +81,7 @@ class RtlDeviceBase : public DevicePins {
                 const Variant& variant);
 
  private:
-  template <class Top, class Nets>
+  template <class Top, class Nets, class Writer>
   friend struct RtlModel;
 
   void before_end_of_elaboration() override;
@@ -90,6 +95,8 @@ class RtlDeviceBase : public DevicePins {
   Config config_;
   Formats formats_;
   std::unique_ptr<Verilated> rtl_;
+  std::unique_ptr<Verilated> (*make_model_)(const Config&);
+  std::unique_ptr<Verilated> (*make_fst_model_)(const Config&);
   std::string vcd_path_;
   bool traceable_ = false;  ///< open_vcd() may be called during the simulation
 };

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace specular {
 namespace tb {
@@ -35,8 +36,10 @@ std::string duration_text(double seconds) {
 }
 }  // namespace
 
-std::string progress_line(std::uint64_t done, std::uint64_t total, double seconds) {
-  std::string line = "  " + grouped(done) + " / " + grouped(total) + " operations";
+std::string progress_line(std::uint64_t done, std::uint64_t total, double seconds,
+                          const std::string& unit, const std::string& label) {
+  std::string line = "  " + (label.empty() ? std::string() : label + ": ") + grouped(done) + " / " +
+                     grouped(total) + " " + unit;
   if (total > 0) {
     char percent[16];
     std::snprintf(percent, sizeof percent, " (%.1f%%)", 100.0 * static_cast<double>(done) / total);
@@ -50,8 +53,9 @@ std::string progress_line(std::uint64_t done, std::uint64_t total, double second
   return line;
 }
 
-Progress::Progress(std::ostream& out, std::uint64_t total, bool enabled)
-    : out_(out), total_(total), enabled_(enabled),
+Progress::Progress(std::ostream& out, std::uint64_t total, bool enabled, std::string unit,
+                   std::string label)
+    : out_(out), total_(total), enabled_(enabled), unit_(std::move(unit)), label_(std::move(label)),
       started_(std::chrono::steady_clock::now()), last_(started_) {}
 
 void Progress::update(std::uint64_t done) {
@@ -60,7 +64,7 @@ void Progress::update(std::uint64_t done) {
   if (now - last_ < std::chrono::milliseconds(500)) return;
   last_ = now;
   const double seconds = std::chrono::duration<double>(now - started_).count();
-  out_ << '\r' << progress_line(done, total_, seconds) << "\033[K" << std::flush;
+  out_ << '\r' << progress_line(done, total_, seconds, unit_, label_) << "\033[K" << std::flush;
   drawn_ = true;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -26,6 +27,55 @@ TEST(TbProgress, LineHasDoneTotalRateAndTimeLeft) {
             "  3,000,000 / 14,000,000,000 operations (0.0%), 3.00 M/s, 1:17:46 left");
   EXPECT_EQ(progress_line(0, 10, 0.5), "  0 / 10 operations (0.0%)");
   EXPECT_EQ(progress_line(7, 7, 14.0), "  7 / 7 operations (100.0%), 0.5 /s, 0:00 left");
+}
+
+TEST(TbProgress, UnitAndLabelNameWhatIsCounted) {
+  // 3 of 12 in 6 s: 0.5 /s, 9 left = 18 s.
+  EXPECT_EQ(progress_line(3, 12, 6.0, "items", "error study"),
+            "  error study: 3 / 12 items (25.0%), 0.5 /s, 0:18 left");
+  std::ostringstream out;
+  Progress progress(out, 4, true, "periods tried", "gatesim");
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  progress.update(1);
+  EXPECT_EQ(out.str().rfind("\r  gatesim: 1 / 4 periods tried (25.0%), ", 0), 0u) << out.str();
+}
+
+// The scripts' progress (scripts/gatesim.sh): the same line through specular_progress.
+TEST(TbProgress, ToolPrintsTheLineAndRefusesBadValues) {
+  const std::string tool = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_progress";
+  const auto dir = scratch_dir();
+  const Outcome ok = run_command("'" + tool + "' 250000 1021000 2", dir, "ok");
+  EXPECT_EQ(ok.status, 0) << ok.err;
+  EXPECT_EQ(ok.out, "  250,000 / 1,021,000 operations (24.5%), 125.0 k/s, 0:06 left\n");
+  // 2 periods of 9 in 100 s: 0.02 /s, 7 left = 350 s.
+  const Outcome named = run_command("'" + tool + "' 2 9 100 'periods tried' gatesim", dir, "named");
+  EXPECT_EQ(named.out, "  gatesim: 2 / 9 periods tried (22.2%), 0.0 /s, 5:50 left\n");
+  const Outcome seconds = run_command("'" + tool + "' 5 10 soon", dir, "seconds");
+  EXPECT_EQ(seconds.status, 2);
+  EXPECT_NE(seconds.err.find("SECONDS 'soon'"), std::string::npos) << seconds.err;
+  EXPECT_NE(seconds.err.find("from 0 to 1e9"), std::string::npos) << seconds.err;
+  const Outcome done = run_command("'" + tool + "' -1 10 1", dir, "done");
+  EXPECT_EQ(done.status, 2);
+  EXPECT_NE(done.err.find("DONE '-1'"), std::string::npos) << done.err;
+  const Outcome count = run_command("'" + tool + "' 1 2", dir, "count");
+  EXPECT_EQ(count.status, 2);
+  EXPECT_NE(count.err.find("3 to 5 arguments, got 2"), std::string::npos) << count.err;
+}
+
+// The soak's stages: no progress line when standard error is a file, none with --quiet
+// on a terminal (script(1) gives the run one).
+TEST(TbProgress, SoakFollowsTheSameRule) {
+  const std::string soak = std::string(SPECULAR_BINARY_DIR) + "/testbench/soak/specular_soak";
+  const auto dir = scratch_dir();
+  const Outcome file = run_command("'" + soak + "' --core 20000 --pin 0 --tlm 0 --tlm-pin 0", dir, "file");
+  EXPECT_EQ(file.status, 0) << file.err;
+  EXPECT_EQ(file.err.find('\r'), std::string::npos) << file.err;
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) not installed";
+  const Outcome quiet = run_command("script -qec \"'" + soak + "' --core 20000 --pin 0 --tlm 0 --tlm-pin 0 "
+                                    "--quiet\" /dev/null", dir, "quiet");
+  EXPECT_EQ(quiet.status, 0) << quiet.out;
+  EXPECT_NE(quiet.out.find("core: ops=20000"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("operations ("), std::string::npos) << quiet.out;
 }
 
 TEST(TbProgress, DrawnInPlaceAtMostTwiceASecondAndCleared) {

@@ -13,6 +13,7 @@
 #include <map>
 #include <string>
 
+#include "specular/twin/rtl_sync_device.h"
 #include "support/scratch.h"
 #include "support/subprocess.h"
 #include "support/vcd.h"
@@ -71,6 +72,29 @@ TEST(TwinFst, RtlWholeRunAsItsVcd) { expect_fst_as_vcd("rtl", "--random 40 --see
 TEST(TwinFst, RtlSyncWholeRunAsItsVcd) { expect_fst_as_vcd("rtl-sync", "--random 40 --seed 5", 40); }
 TEST(TwinFst, RtlWindowAsItsVcd) { expect_fst_as_vcd("rtl", "--random 40 --trace-ops 10:3", 3); }
 TEST(TwinFst, RtlSyncWindowAsItsVcd) { expect_fst_as_vcd("rtl-sync", "--random 40 --trace-ops 10:3", 3); }
+
+// The twin runs one verilated class from the start: a window during the simulation is
+// opened in the format allow_tracing() chose, another name is refused naming both.
+TEST(TwinFst, AWindowInTheOtherFormatIsRefused) {
+  const fs::path dir = scratch_dir();
+  specular::RtlSyncHarness harness("tb", specular::Config{}, sc_core::sc_time(10, sc_core::SC_NS), false);
+  harness.dut.allow_tracing(true);
+  sc_core::sc_start(sc_core::sc_time(100, sc_core::SC_NS));
+  try {
+    harness.dut.open_vcd((dir / "w.vcd").string());
+    ADD_FAILURE() << "a VCD window opened on the FST model";
+  } catch (const std::logic_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("RtlSyncDevice::open_vcd('"), std::string::npos) << what;
+    EXPECT_NE(what.find("w.vcd'): the model writes FST"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(dir / "w.vcd"));
+  harness.dut.open_vcd((dir / "w.fst").string());
+  sc_core::sc_start(sc_core::sc_time(100, sc_core::SC_NS));
+  harness.dut.close_vcd();
+  std::ifstream in(dir / "w.fst", std::ios::binary);
+  EXPECT_EQ(in.get(), 0);  // FST's header block
+}
 
 TEST(TwinFst, PinModelStillConvertsAndNeedsVcd2fst) {
   const fs::path dir = scratch_dir();

@@ -27,6 +27,7 @@ struct Fig2Nets {
 RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
     : RtlDeviceBase(name, config, real_views,
                     {"RtlDevice", "RTL twin", "waveforms/specular_rtl.gtkw",
+                     &RtlModel<Vspecular_device_cc, Fig2Nets>::make,
                      &RtlModel<Vspecular_device_cc, Fig2Nets>::make}) {
   bind(protocol_checker, q41, q42, nand45);
   // NAND 45 starts high, as the netlist's does, until the first evaluation.

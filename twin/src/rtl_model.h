@@ -10,11 +10,14 @@
 
 #include <cstdint>
 #include <memory>
+#include <type_traits>
+#include <utility>
 
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_device_base.h"
 #include "rom_loader.h"
+#include "verilated_clock.h"
 
 namespace specular {
 
@@ -34,17 +37,32 @@ struct RtlDeviceBase::Verilated {
 
   virtual ~Verilated() = default;
   /// Copies the pins into the model, evaluates it and writes the outputs that changed.
-  virtual void evaluate(RtlDeviceBase& device) = 0;
-  /// Lets Verilator trace every net of the model into `vcd`.
+  /// `rising_edge_only`: called at rising edges of pin 28 only (a synchronous device
+  /// without a VCD); the model is first shown the falling edge it has not seen.
+  virtual void evaluate(RtlDeviceBase& device, bool rising_edge_only) = 0;
+  /// Lets Verilator trace every net of the model into `vcd` (traceable() only).
   virtual void trace(VerilatedVcdC& vcd) = 0;
+  virtual bool traceable() const = 0;
+  /// Verilated with its configuration fixed (FIXED_CONFIG = 1).
+  virtual bool fixed() const = 0;
 };
+
+/// Whether a verilated class was built with trace code (Verilator's TRACE option).
+template <class Top, class = void>
+struct HasTrace : std::false_type {};
+template <class Top>
+struct HasTrace<Top, std::void_t<decltype(std::declval<Top&>().trace(
+                         static_cast<VerilatedVcdC*>(nullptr), 0))>> : std::true_type {};
 
 /// `Top`: the class Verilator made (its root header included too: the ROMs are written
 /// through top.rootp). `Nets`: the twin's own observed nets, with
 /// `using Device = ...;` (the twin) and
 /// `template <class Top, class Update> void update(Device&, const Top&, const Update&)`
 /// that passes each net's last bits, its bits now and its write to `update`.
-template <class Top, class Nets>
+/// `Fixed`: Top was verilated with its configuration as parameters (FIXED_CONFIG = 1,
+/// twin/fixed/rtl_sync_fixed.cmake); it reads no pin 19, 20, 34 nor configuration input,
+/// so evaluate() checks that the pins carry the values it was built with.
+template <class Top, class Nets, bool Fixed = false>
 struct RtlModel final : RtlDeviceBase::Verilated {
   /// The model's outputs after the last evaluation, as its port bits.
   struct Outputs {
@@ -56,26 +74,51 @@ struct RtlModel final : RtlDeviceBase::Verilated {
   bool outputs_valid = false;
 
   /// The policies, tied off for the life of the device (configuration inputs).
-  explicit RtlModel(const Config& config) {
+  code_t fixed_h19, fixed_a20;  ///< the codes a fixed model was built with (its Config's)
+
+  explicit RtlModel(const Config& config)
+      : fixed_h19(pin19_code(config)), fixed_a20(pin20_code(config)) {
     load_rom_words(*top.rootp, Formats(config.widths));
     top.cfg_literal = config.saturation == Saturation::literal;
     top.cfg_rom38_bank = rom38_bank(config);
   }
-  ~RtlModel() override { vcd.reset(); }  // the writer goes before the model it traces
+  ~RtlModel() override {
+    vcd.reset();  // the writer goes before the model it traces
+    ::Verilated::threadContextp(&context);  // its scopes unregister there (rtl_sync_engine.h)
+  }
 
   static std::unique_ptr<RtlDeviceBase::Verilated> make(const Config& config) {
     return std::make_unique<RtlModel>(config);
   }
 
-  void trace(VerilatedVcdC& writer) override { top.trace(&writer, 99); }
+  void trace(VerilatedVcdC& writer) override {
+    if constexpr (HasTrace<Top>::value) top.trace(&writer, 99);
+  }
+  bool traceable() const override { return HasTrace<Top>::value; }
+  bool fixed() const override { return Fixed; }
 
-  void evaluate(RtlDeviceBase& device) override {
+  void evaluate(RtlDeviceBase& device, bool rising_edge_only) override {
     // The model runs at the default widths only (constructor): compile-time masks.
     using F = DefaultFormats;
     constexpr auto bits = [](code_t code, const FixedFormat& format) {
       return static_cast<std::uint64_t>(code) & ((std::uint64_t{1} << format.width()) - 1);
     };
     const Inputs& in = inputs;
+    if constexpr (Fixed) {
+      if (in.pin19->read() != fixed_h19 || in.pin20->read() != fixed_a20 || !in.pin34->read())
+        SC_REPORT_ERROR("specular/rtl",
+                        "pins 19, 20 or 34 differ from the constants this specialised "
+                        "synchronous RTL model was verilated with (docs/rtl.md)");
+    }
+    if (rising_edge_only && top.pin28_clk && in.pin28->posedge()) {
+      // The falling edge since the last rising one, where nothing changes.
+      if constexpr (Fixed) {
+        show_clock_low(top);  // verilated_clock.h
+      } else {
+        top.pin28_clk = 0;
+        top.eval();
+      }
+    }
     top.pin17_cos = static_cast<std::uint32_t>(bits(in.pin17->read(), F::cos));
     top.pin18_n = static_cast<std::uint16_t>(bits(in.pin18->read(), F::n));
     top.pin19_h = static_cast<std::uint16_t>(bits(in.pin19->read(), F::mux4));

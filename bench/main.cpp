@@ -87,6 +87,9 @@ const std::vector<Model>& models() {
       {"rtl_cpp_stream",
        [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_cpp_stream", true); },
        8'000'000, 200'000, 3, "RTL twin as plain C++, n/RGB held per 256 results (2 T)"},
+      {"rtl_general_cpp_stream",
+       [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_general_cpp_stream", true, false); },
+       4'000'000, 200'000, 3, "RTL twin as plain C++, general verilation, streaming (2 T)"},
       // The synchronous variant (rtl/specular_device_sync.v) as plain C++: the fast
       // cycle model (docs/rtl.md).
       {"rtl_sync_cpp",

@@ -54,8 +54,10 @@ void measure_cycle_model(const Plan& plan, const std::string& name, bool stream,
 
 }  // namespace
 
-void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream) {
-  specular::RtlCycleModel model;
+void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream,
+                             bool allow_fixed) {
+  specular::RtlCycleModel model(specular::Config{}, allow_fixed);
+  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "");
   measure_cycle_model(plan, name, stream, model,
                       [](specular::RtlCycleModel& m, std::vector<Operands>& batch,
                          std::vector<Result>& out, std::size_t /*count: batch.size()*/) {

@@ -26,8 +26,11 @@ using testing_support::expect_every_operation_equals_the_core;
 using testing_support::sync_periods;
 
 class RtlExhaustive : public testing_support::DevicePolicyTest {};
+// The general verilation on every device (specialised ones: tests/test_long_rtl_fixed.cpp).
 TEST_P(RtlExhaustive, EveryCosCodeAndEveryNEqualsTheCore) {
-  expect_every_operation_equals_the_core<RtlCycleModel>(config(), drawn_periods);
+  expect_every_operation_equals_the_core<RtlCycleModel>(
+      config(), drawn_periods,
+      [](const Config& c) { return std::make_unique<RtlCycleModel>(c, /*allow_fixed=*/false); });
 }
 INSTANTIATE_TEST_SUITE_P(Devices, RtlExhaustive, testing_support::every_device(),
                          testing_support::device_name);

@@ -1,4 +1,4 @@
-// The specialised verilation of the synchronous variant (issue 28; docs/rtl.md,
+// The specialised verilations of the synchronous variant and the drawn twin (issue 28; docs/rtl.md,
 // "Specialised verilation"), quickly: which runs use it (the plain C++ model, the TLM
 // rtl-sync target and specular_tb --model rtl-sync whenever the Config matches a
 // specialised build; the general model otherwise and for a VCD), and its results
@@ -13,6 +13,8 @@
 
 #include "run_models.h"
 #include "specular/core.h"
+#include "specular/twin/rtl_cycle_model.h"
+#include "specular/twin/rtl_device.h"
 #include "specular/twin/rtl_sync_cycle_model.h"
 #include "specular/twin/rtl_sync_device.h"
 
@@ -110,6 +112,65 @@ TEST(RtlSyncFixed, SpecularTbModelRtlSyncEqualsTheCoreOnIt) {
     if ((!same_result(results[i], core.run(ops[i])) || cycles[i] != 2.0) && mismatches++ < 3)
       ADD_FAILURE() << "operation " << i << ": n " << ops[i].n << ", cos code " << ops[i].cos
                     << ", " << cycles[i] << " periods";
+  EXPECT_EQ(mismatches, 0u);
+}
+
+// The drawn twin: RtlCycleModel (and so the TLM rtl target) and RtlDevice.
+TEST(RtlFixed, TheDrawnTwinIsBuiltAndChosenWhereverItsConfigRuns) {
+  EXPECT_TRUE(RtlCycleModel().fixed());
+  EXPECT_FALSE(RtlCycleModel(Config{}, /*allow_fixed=*/false).fixed());
+  Config other;
+  other.constants = Constants::minimax;
+  other.normalisation = Normalisation::energy;
+  other.saturation = Saturation::literal;
+  EXPECT_EQ(RtlCycleModel(other).fixed(), built(other));
+}
+
+TEST(RtlFixed, DrawnReloadingAndStreamingEqualTheCoreAndTheGeneralModel) {
+  const Core core;
+  for (const bool stream : {false, true}) {
+    const std::vector<Operands> ops = random_operations(core.formats(), stream, 2813);
+    RtlCycleModel fixed, general(Config{}, false);
+    ASSERT_TRUE(fixed.fixed());
+    fixed.reset();
+    general.reset();
+    std::vector<Result> a, b;
+    fixed.run_batch(ops, a);
+    general.run_batch(ops, b);
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < ops.size(); ++i) {
+      const Result c = core.run(ops[i]);
+      if ((!same_result(a[i], c) || !same_result(b[i], c) || fixed.cycles()[i] != 2.5) &&
+          mismatches++ < 3)
+        ADD_FAILURE() << (stream ? "streaming" : "reloading") << ", operation " << i;
+    }
+    EXPECT_EQ(mismatches, 0u);
+    EXPECT_EQ(fixed.half_periods(), general.half_periods());
+  }
+}
+
+TEST(RtlFixed, TheDrawnHarnessRunsItAndTheGeneralTracedModelForAVcd) {
+  RtlHarness harness("harness", Config{}, sc_core::sc_time(10, sc_core::SC_NS));
+  EXPECT_TRUE(harness.dut.fixed());
+  harness.dut.open_vcd(testing::TempDir() + "rtl_fixed.vcd");
+  EXPECT_FALSE(harness.dut.fixed());
+}
+
+TEST(RtlFixed, SpecularTbModelRtlEqualsTheCoreOnIt) {
+  tb::RunSettings settings;
+  settings.model = tb::Model::rtl;
+  const Core core;
+  std::vector<Operands> ops = random_operations(core.formats(), false, 2030);
+  const std::vector<Operands> streamed = random_operations(core.formats(), true, 2031);
+  ops.insert(ops.end(), streamed.begin(), streamed.end());
+  std::vector<Result> results;
+  std::vector<double> cycles;
+  tb::run_operations(settings, ops, results, cycles);
+  ASSERT_EQ(results.size(), ops.size());
+  std::size_t mismatches = 0;
+  for (std::size_t i = 0; i < ops.size(); ++i)
+    if ((!same_result(results[i], core.run(ops[i])) || cycles[i] != 2.5) && mismatches++ < 3)
+      ADD_FAILURE() << "operation " << i << ": n " << ops[i].n << ", cos code " << ops[i].cos;
   EXPECT_EQ(mismatches, 0u);
 }
 

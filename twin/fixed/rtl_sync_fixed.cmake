@@ -9,10 +9,12 @@
 #                           NORMALISATION <patent|energy|none|device-energy>
 #                           SATURATION <clamp|literal>)
 #
-# verilates one more model into specular_rtl_models (Vspecular_device_sync_fixed_<tag>,
-# untraced, default widths) and lists it in the table that RtlSyncCycleModel, the TLM
-# rtl-sync target and RtlSyncDevice (without --vcd) consult: a run whose Config matches
-# uses it. The parameters' values come from the library's own sources (constants.cpp,
+# verilates two more models into specular_rtl_models, untraced, default widths:
+# Vspecular_device_sync_fixed_<tag> (the synchronous variant) and
+# Vspecular_device_fixed_<tag> (the drawn twin, specular_device.v, same parameters), and
+# lists them in the table that RtlSyncCycleModel / RtlCycleModel, the TLM rtl-sync / rtl
+# targets and RtlSyncDevice / RtlDevice (without --vcd) consult: a run whose Config
+# matches uses them. The parameters' values come from the library's own sources (constants.cpp,
 # rom38_banks.h), compiled into a probe and run when CMake configures.
 # The cache list SPECULAR_RTL_SYNC_FIXED (default "patent/patent/clamp", the default
 # device) calls it once per entry "constants/normalisation/saturation"; each entry adds
@@ -52,6 +54,13 @@ function(specular_rtl_sync_fixed)
     SOURCES ${SPECULAR_RTL_SYNC_FIXED_DIR}/rom_words_fixed.vlt ${RTL_SYNC_SOURCES}
     VERILATOR_ARGS ${RTL_VERILATOR_ARGS} ${params}
     OPT_FAST ${RTL_OPT})
+  # The drawn twin (specular_device) with the same parameters: RtlCycleModel, the TLM
+  # rtl target and RtlDevice (without a VCD) use it for this configuration.
+  verilate(specular_rtl_models PREFIX Vspecular_device_fixed_${tag}
+    TOP_MODULE specular_device
+    SOURCES ${SPECULAR_RTL_SYNC_FIXED_DIR}/rom_words_fixed.vlt ${RTL_TOP} ${RTL_SOURCES}
+    VERILATOR_ARGS ${RTL_VERILATOR_ARGS} ${params}
+    OPT_FAST ${RTL_OPT})
   set_property(GLOBAL APPEND PROPERTY SPECULAR_RTL_SYNC_FIXED_MODELS
                "${tag}|${F_CONSTANTS}|${F_NORMALISATION}|${F_SATURATION}")
   message(STATUS "Specialised synchronous RTL model ${tag}: ${params}")
@@ -71,9 +80,11 @@ function(specular_rtl_sync_fixed_table out)
     list(GET fields 3 saturation)
     string(APPEND FIXED_INCLUDES
            "#include \"Vspecular_device_sync_fixed_${tag}.h\"\n"
-           "#include \"Vspecular_device_sync_fixed_${tag}___024root.h\"\n")
+           "#include \"Vspecular_device_sync_fixed_${tag}___024root.h\"\n"
+           "#include \"Vspecular_device_fixed_${tag}.h\"\n"
+           "#include \"Vspecular_device_fixed_${tag}___024root.h\"\n")
     string(APPEND FIXED_ENTRIES
-           "    entry<Vspecular_device_sync_fixed_${tag}>(\"${constants}\", \"${normalisation}\", \"${saturation}\"),\n")
+           "    entry<Vspecular_device_sync_fixed_${tag}, Vspecular_device_fixed_${tag}>(\"${constants}\", \"${normalisation}\", \"${saturation}\"),\n")
   endforeach()
   set(generated ${CMAKE_CURRENT_BINARY_DIR}/rtl_sync_fixed_table.cpp)
   configure_file(${SPECULAR_RTL_SYNC_FIXED_DIR}/rtl_sync_fixed_table.cpp.in ${generated} @ONLY)

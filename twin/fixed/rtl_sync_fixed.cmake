@@ -63,7 +63,7 @@ function(specular_rtl_sync_fixed)
     OPT_FAST ${RTL_OPT})
   set_property(GLOBAL APPEND PROPERTY SPECULAR_RTL_SYNC_FIXED_MODELS
                "${tag}|${F_CONSTANTS}|${F_NORMALISATION}|${F_SATURATION}")
-  message(STATUS "Specialised synchronous RTL model ${tag}: ${params}")
+  message(STATUS "Specialised RTL models (both twins) ${tag}: ${params}")
 endfunction()
 
 # The table of the models built (twin/src/rtl_sync_fixed_table.cpp.in): call after the

@@ -57,7 +57,7 @@ void measure_cycle_model(const Plan& plan, const std::string& name, bool stream,
 void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream,
                              bool allow_fixed) {
   specular::RtlCycleModel model(specular::Config{}, allow_fixed);
-  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "");
+  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "bool");
   measure_cycle_model(plan, name, stream, model,
                       [](specular::RtlCycleModel& m, std::vector<Operands>& batch,
                          std::vector<Result>& out, std::size_t /*count: batch.size()*/) {
@@ -69,7 +69,7 @@ void measure_rtl_sync_cycle_model(const Plan& plan, const std::string& name, boo
                                   bool allow_fixed) {
   specular::RtlSyncCycleModel model(specular::Config{}, allow_fixed);
   // 1: the verilation specialised to the default device (docs/rtl.md), 0: the general one.
-  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "");
+  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "bool");
   measure_cycle_model(plan, name, stream, model,
                       [](specular::RtlSyncCycleModel& m, std::vector<Operands>& batch,
                          std::vector<Result>& out, std::size_t count) {

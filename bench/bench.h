@@ -85,9 +85,11 @@ enum class PinDevice {
 void measure_pin(const Plan& plan, const std::string& name, bool stream, Trace trace,
                  PinDevice device = PinDevice::netlist);
 /// The RTL twin as plain C++ (RtlCycleModel), clocked without the kernel.
-void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream);
+void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream,
+                             bool allow_fixed = true);
 /// The synchronous variant as plain C++ (RtlSyncCycleModel): the fast cycle model.
-void measure_rtl_sync_cycle_model(const Plan& plan, const std::string& name, bool stream);
+void measure_rtl_sync_cycle_model(const Plan& plan, const std::string& name, bool stream,
+                                  bool allow_fixed = true);
 
 /// How a TLM model is driven (SpecularDriver over a simple_initiator_socket).
 struct TlmOptions {

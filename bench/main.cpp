@@ -87,6 +87,9 @@ const std::vector<Model>& models() {
       {"rtl_cpp_stream",
        [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_cpp_stream", true); },
        8'000'000, 200'000, 3, "RTL twin as plain C++, n/RGB held per 256 results (2 T)"},
+      {"rtl_general_cpp_stream",
+       [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_general_cpp_stream", true, false); },
+       4'000'000, 200'000, 3, "RTL twin as plain C++, general verilation, streaming (2 T)"},
       // The synchronous variant (rtl/specular_device_sync.v) as plain C++: the fast
       // cycle model (docs/rtl.md).
       {"rtl_sync_cpp",
@@ -95,6 +98,11 @@ const std::vector<Model>& models() {
       {"rtl_sync_cpp_stream",
        [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_cpp_stream", true); },
        16'000'000, 200'000, 3, "synchronous RTL variant as plain C++, n/RGB held per 256 results (2 T)"},
+      // The same through the general verilation (configuration as inputs), beside the
+      // one specialised to the default device that rtl_sync_cpp* run (issue 28).
+      {"rtl_sync_general_cpp_stream",
+       [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_general_cpp_stream", true, false); },
+       8'000'000, 200'000, 3, "synchronous RTL variant as plain C++, general verilation, streaming (2 T)"},
       {"pin_vcd_on",
        [](const Plan& p) { measure_pin(p, "pin_vcd_on", false, Trace::vcd); },
        100'000, 4096, 1, "pin-level device as pin_vcd_off, every pin and net to VCD (specular_tb --vcd)"},
@@ -238,6 +246,9 @@ const std::vector<Target>& targets() {
       // 10 M results/s, streaming one material.
       {"rtl_sync_cpp_stream_vs_pow", true, 0.25, "synchronous RTL variant as plain C++, streaming (2 T), over std::pow"},
       {"rtl_sync_cpp_stream_rate", true, 10.0, "synchronous RTL variant as plain C++, streaming (2 T), M results/s"},
+      // Issue 28: the synchronous twin under the SystemC harness, 3x the netlist.
+      {"rtl_sync_vs_pin", true, 3.0, "synchronous RTL variant under the pin harness (3 T) over the SystemC netlist"},
+      {"rtl_sync_stream_vs_pin_stream", true, 3.0, "synchronous RTL variant under the pin harness, streaming (2 T), over the netlist"},
       {"vcd_slowdown", false, 6.0, "pin-level device without VCD over with VCD (how much slower tracing is)"},
   };
    return all;

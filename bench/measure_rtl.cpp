@@ -1,7 +1,8 @@
 // The RTL twins as plain C++: the verilated device clocked edge by edge without the
 // SystemC kernel, batches of operations as DeviceHarness runs them — RtlCycleModel (the
 // drawn device) and RtlSyncCycleModel (the synchronous variant, the fast cycle model,
-// fed through caller-owned arrays as a user's loop would: no allocation per chunk).
+// fed through caller-owned arrays as a user's loop would: no allocation per chunk; the
+// verilation specialised to the default device, or with allow_fixed false the general one).
 #include <algorithm>
 
 #include "bench.h"
@@ -53,8 +54,10 @@ void measure_cycle_model(const Plan& plan, const std::string& name, bool stream,
 
 }  // namespace
 
-void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream) {
-  specular::RtlCycleModel model;
+void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool stream,
+                             bool allow_fixed) {
+  specular::RtlCycleModel model(specular::Config{}, allow_fixed);
+  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "bool");
   measure_cycle_model(plan, name, stream, model,
                       [](specular::RtlCycleModel& m, std::vector<Operands>& batch,
                          std::vector<Result>& out, std::size_t /*count: batch.size()*/) {
@@ -62,8 +65,11 @@ void measure_rtl_cycle_model(const Plan& plan, const std::string& name, bool str
                       });
 }
 
-void measure_rtl_sync_cycle_model(const Plan& plan, const std::string& name, bool stream) {
-  specular::RtlSyncCycleModel model;
+void measure_rtl_sync_cycle_model(const Plan& plan, const std::string& name, bool stream,
+                                  bool allow_fixed) {
+  specular::RtlSyncCycleModel model(specular::Config{}, allow_fixed);
+  // 1: the verilation specialised to the default device (docs/rtl.md), 0: the general one.
+  print_figure(name + "_fixed", model.fixed() ? 1.0 : 0.0, "bool");
   measure_cycle_model(plan, name, stream, model,
                       [](specular::RtlSyncCycleModel& m, std::vector<Operands>& batch,
                          std::vector<Result>& out, std::size_t count) {

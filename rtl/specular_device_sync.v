@@ -14,7 +14,16 @@ module specular_device_sync #(
   parameter ROM38_INT = 9, ROM38_FRAC = 16, ROM38_BANK_BITS = 4,
   parameter NORM_INT = 10, NORM_FRAC = 20,
   parameter OUT_INT = 18, OUT_FRAC = 13,
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex"
+  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex",
+  // A configuration fixed when the device is built (docs/rtl.md, "Specialised
+  // verilation"): FIXED_CONFIG = 1 ties pins 19, 20, 34 and the configuration inputs off
+  // inside the device to these values, so a simulator folds them into the datapath (the
+  // pins stay and are not read). FIXED_CONFIG = 0 (default): the pins and inputs are read.
+  parameter FIXED_CONFIG = 0,
+  parameter [N_BITS+MUX4_FRAC-1:0] FIXED_H19 = 0,
+  parameter [REG9_INT+REG9_FRAC:0] FIXED_A20 = 0,
+  parameter FIXED_CARRY34 = 1, FIXED_LITERAL = 0,
+  parameter [ROM38_BANK_BITS-1:0] FIXED_ROM38_BANK = 0
 ) (
   input  wire [COS_FRAC:0]                    pin17_cos,    // U1.COS_FRAC
   input  wire [N_BITS-1:0]                    pin18_n,
@@ -64,6 +73,13 @@ module specular_device_sync #(
   wire [NORM_W-1:0]   mul39_norm;
   wire select36, write37, load1;
 
+  // Pins 19, 20, 34 and the configuration inputs, or their values fixed at build time.
+  wire [MUX4_W-1:0]          h19 = FIXED_CONFIG != 0 ? FIXED_H19 : pin19_h;
+  wire [REG9_W-1:0]          a20 = FIXED_CONFIG != 0 ? FIXED_A20 : pin20_a;
+  wire                       carry34 = FIXED_CONFIG != 0 ? FIXED_CARRY34 != 0 : pin34_carry;
+  wire                       literal = FIXED_CONFIG != 0 ? FIXED_LITERAL != 0 : cfg_literal;
+  wire [ROM38_BANK_BITS-1:0] rom38_bank = FIXED_CONFIG != 0 ? FIXED_ROM38_BANK : cfg_rom38_bank;
+
   // Input registers: clock enables on the one clock. Register 1 takes pin 17 when the
   // sequencer accepts a start; 2 and 10-12 take their pins while 30-33 are high.
   register_enable #(.W(COS_W))    reg1  (.clk(pin28_clk), .enable(load1),        .d(pin17_cos), .q(reg1_q));
@@ -77,7 +93,7 @@ module specular_device_sync #(
   multiplexer3 #(.COS_W(COS_W), .REG9_W(REG9_W), .ALIGN(REG9_FRAC - COS_FRAC)) mux3 (
     .select36(select36), .reg1(reg1_q), .reg9(reg9_q), .address(mux3_address));
   multiplexer4 #(.N_BITS(N_BITS), .FRAC(MUX4_FRAC)) mux4 (
-    .select36(select36), .reg2(reg2_q), .h19(pin19_h), .operand(mux4_operand));
+    .select36(select36), .reg2(reg2_q), .h19(h19), .operand(mux4_operand));
   rom5 #(.ADDR_BITS(ROM5_ADDR_BITS), .WORD_BITS(ROM5_WORD_BITS), .BUS_W(REG9_W),
          .BUS_FRAC(REG9_FRAC), .COS_FRAC(COS_FRAC), .LOG2_W(LOG2_W),
          .IMAGE(ROM5_IMAGE)) rom5 (
@@ -87,14 +103,14 @@ module specular_device_sync #(
     .log2(rom5_log2), .operand(mux4_operand), .product(mul6_product));
   inverter7 #(.W(REG9_W)) inv7 (.product(mul6_product), .inverted(inv7_inverted));
   adder8 #(.W(REG9_W)) adder8 (
-    .literal(cfg_literal), .a20(pin20_a), .inverted(inv7_inverted),
-    .carry34(pin34_carry), .sum(adder8_sum));
+    .literal(literal), .a20(a20), .inverted(inv7_inverted),
+    .carry34(carry34), .sum(adder8_sum));
   register_enable #(.W(REG9_W)) reg9 (.clk(pin28_clk), .enable(write37), .d(adder8_sum), .q(reg9_q));
 
   // Normalisation and colour: ROM 38 -> multiplier 39 -> multipliers 13-15 -> pins 24-26.
   rom38 #(.N_BITS(N_BITS), .WORD_W(ROM38_W), .BANK_BITS(ROM38_BANK_BITS),
           .IMAGE(ROM38_IMAGE)) rom38 (
-    .bank(cfg_rom38_bank), .reg2(reg2_q), .k(rom38_k));
+    .bank(rom38_bank), .reg2(reg2_q), .k(rom38_k));
   multiplier39 #(.A_W(REG9_W), .K_W(ROM38_W), .OUT_W(NORM_W), .SHIFT(MUL39_SHIFT)) mul39 (
     .reg9(reg9_q), .k(rom38_k), .norm(mul39_norm));
   multiplier_rgb #(.NORM_W(NORM_W), .RGB_BITS(RGB_BITS), .OUT_W(OUT_W),

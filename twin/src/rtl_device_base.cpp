@@ -8,7 +8,7 @@ namespace specular {
 
 RtlDeviceBase::RtlDeviceBase(sc_core::sc_module_name name, const Config& config,
                              bool real_views, const Variant& variant)
-    : DevicePins(name), class_name_(variant.class_name), config_(config),
+    : DevicePins(name), variant_(variant), class_name_(variant.class_name), config_(config),
       formats_(config.widths) {
   const std::string twin = variant.twin_name;
   if (!same_formats(config.widths, Widths{}))
@@ -20,8 +20,6 @@ RtlDeviceBase::RtlDeviceBase(sc_core::sc_module_name name, const Config& config,
         "the " + twin + " has no real-valued views: its VCD holds the RTL's own nets as codes "
         "(" + variant.gtkw + " shows them as real numbers)");
   rtl_ = variant.make_model(config);
-  make_model_ = variant.make_model;
-  make_fst_model_ = variant.make_fst_model;
   arith::Rom38Table check(formats_, config);  // a device the core refuses, the twin refuses too
 
   // Done (35) starts high (idle), as the netlist's does, until the first evaluation.
@@ -40,8 +38,12 @@ void RtlDeviceBase::evaluate() {
     v.last_eval_ps = now_ps;
     v.evaluated = true;
   }
-  v.evaluate(*this);
+  v.evaluate(*this, false);
 }
+
+void RtlDeviceBase::evaluate_at_rising_edge() { rtl_->evaluate(*this, true); }
+
+bool RtlDeviceBase::fixed() const { return rtl_->fixed(); }
 
 void RtlDeviceBase::end_of_elaboration() {
   // The pins' channels, read directly on the hot path (an sc_in read checks its binding
@@ -65,6 +67,15 @@ void RtlDeviceBase::before_end_of_elaboration() {
   // variant start and the loads feed the sequencer's and the registers' enables, which
   // the waveform shows: they stay in the list too. Declared here, once open_vcd() could
   // have been called.
+  if (variant_.synchronous && !traceable_) {
+    // The synchronous variant samples every input at the rising edge of pin 28 and
+    // changes nothing at the falling one: one evaluation per rising edge (the model sees
+    // the falling edge just before it), and pins 19, 20, 34 for the specialised model's
+    // check that they carry its constants.
+    SC_METHOD(evaluate_at_rising_edge);
+    sensitive << pin28_clk.pos() << pin19_h << pin20_a << pin34_carry;
+    return;
+  }
   SC_METHOD(evaluate);
   sensitive << pin19_h << pin20_a << pin27_start << pin28_clk << pin29_reset_n
             << pin30_load_n << pin31_load_r << pin32_load_g << pin33_load_b << pin34_carry;
@@ -75,11 +86,13 @@ void RtlDeviceBase::allow_tracing(bool fst) {
   if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
     throw std::logic_error(std::string(class_name_) +
                            "::allow_tracing must be called before the simulation starts");
-  // ---- FST (issue 27): the model verilated with --trace-fst replaces the VCD one
-  // before it has run (its policies tied off again; the pins' channels are taken at
-  // end_of_elaboration, after this).
-  if (fst != rtl_->fst()) rtl_ = fst ? make_fst_model_(config_) : make_model_(config_);
   traceable_ = true;
+  // A specialised model has no trace code, and a verilated class writes one format: the
+  // general model traced in the format asked for (FST: issue 27) takes its place before
+  // it has run (its policies tied off again; the pins' channels are taken at
+  // end_of_elaboration, after this).
+  if (!rtl_->traceable() || fst != rtl_->fst())
+    rtl_ = fst ? variant_.make_fst_model(config_) : variant_.make_traced_model(config_);
   rtl_->context.traceEverOn(true);
 }
 

@@ -11,13 +11,16 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_device_base.h"
 #include "rom_loader.h"
+#include "verilated_clock.h"
 
 namespace specular {
 
@@ -38,11 +41,17 @@ struct RtlDeviceBase::Verilated {
 
   virtual ~Verilated() = default;
   /// Copies the pins into the model, evaluates it and writes the outputs that changed.
-  virtual void evaluate(RtlDeviceBase& device) = 0;
+  /// `rising_edge_only`: called at rising edges of pin 28 only (a synchronous device
+  /// without a trace); the model is first shown the falling edge it has not seen.
+  virtual void evaluate(RtlDeviceBase& device, bool rising_edge_only) = 0;
+  /// Whether the class has trace code (a specialised verilation has none).
+  virtual bool traceable() const = 0;
+  /// Verilated with its configuration fixed (FIXED_CONFIG = 1).
+  virtual bool fixed() const = 0;
   /// Whether the model writes FST (its class verilated with --trace-fst), else VCD.
   virtual bool fst() const = 0;
   /// Opens Verilator's writer on `path` (1 ps resolution, SystemC's) and lets it trace
-  /// every net of the model.
+  /// every net of the model (traceable() only).
   virtual void open_writer(const std::string& path) = 0;
   /// Whether a writer is open.
   virtual bool writing() const = 0;
@@ -52,14 +61,25 @@ struct RtlDeviceBase::Verilated {
   virtual void close_writer() = 0;
 };
 
+/// Whether a verilated class was built with trace code for `Writer` (Verilator's TRACE
+/// option for VerilatedVcdC, TRACE_FST for VerilatedFstC).
+template <class Top, class Writer, class = void>
+struct HasTrace : std::false_type {};
+template <class Top, class Writer>
+struct HasTrace<Top, Writer, std::void_t<decltype(std::declval<Top&>().trace(
+                                 static_cast<Writer*>(nullptr), 0))>> : std::true_type {};
+
 /// `Top`: the class Verilator made (its root header included too: the ROMs are written
 /// through top.rootp). `Nets`: the twin's own observed nets, with
 /// `using Device = ...;` (the twin) and
 /// `template <class Top, class Update> void update(Device&, const Top&, const Update&)`
 /// that passes each net's last bits, its bits now and its write to `update`.
 /// `Writer`: Verilator's writer the class was verilated for (VerilatedVcdC for --trace,
-/// VerilatedFstC for --trace-fst).
-template <class Top, class Nets, class Writer = VerilatedVcdC>
+/// VerilatedFstC for --trace-fst; unused by a class without trace code).
+/// `Fixed`: Top was verilated with its configuration as parameters (FIXED_CONFIG = 1,
+/// twin/fixed/rtl_sync_fixed.cmake); it reads no pin 19, 20, 34 nor configuration input,
+/// so evaluate() checks that the pins carry the values it was built with.
+template <class Top, class Nets, class Writer = VerilatedVcdC, bool Fixed = false>
 struct RtlModel final : RtlDeviceBase::Verilated {
   /// The model's outputs after the last evaluation, as its port bits.
   struct Outputs {
@@ -72,25 +92,37 @@ struct RtlModel final : RtlDeviceBase::Verilated {
   bool outputs_valid = false;
 
   /// The policies, tied off for the life of the device (configuration inputs).
-  explicit RtlModel(const Config& config) {
+  code_t fixed_h19, fixed_a20;  ///< the codes a fixed model was built with (its Config's)
+
+  explicit RtlModel(const Config& config)
+      : fixed_h19(pin19_code(config)), fixed_a20(pin20_code(config)) {
     load_rom_words(*top.rootp, Formats(config.widths));
     top.cfg_literal = config.saturation == Saturation::literal;
     top.cfg_rom38_bank = rom38_bank(config);
   }
-  ~RtlModel() override { writer.reset(); }  // the writer goes before the model it traces
+  ~RtlModel() override {
+    writer.reset();  // the writer goes before the model it traces
+    ::Verilated::threadContextp(&context);  // its scopes unregister there (rtl_sync_engine.h)
+  }
 
   static std::unique_ptr<RtlDeviceBase::Verilated> make(const Config& config) {
     return std::make_unique<RtlModel>(config);
   }
 
+  bool traceable() const override { return HasTrace<Top, Writer>::value; }
+  bool fixed() const override { return Fixed; }
   bool fst() const override { return std::is_same_v<Writer, VerilatedFstC>; }
   void open_writer(const std::string& path) override {
-    writer = std::make_unique<Writer>();
-    top.trace(writer.get(), 99);
-    // SystemC's time resolution (1 ps by default) is the waveform's time unit.
-    writer->set_time_resolution("1ps");
-    writer->set_time_unit("1ps");
-    writer->open(path.c_str());
+    if constexpr (HasTrace<Top, Writer>::value) {
+      writer = std::make_unique<Writer>();
+      top.trace(writer.get(), 99);
+      // SystemC's time resolution (1 ps by default) is the waveform's time unit.
+      writer->set_time_resolution("1ps");
+      writer->set_time_unit("1ps");
+      writer->open(path.c_str());
+    } else {
+      throw std::logic_error("open_writer('" + path + "'): this verilation has no trace code");
+    }
   }
   bool writing() const override { return writer != nullptr; }
   void dump(std::uint64_t ps) override { writer->dump(ps); }
@@ -100,13 +132,28 @@ struct RtlModel final : RtlDeviceBase::Verilated {
     writer.reset();
   }
 
-  void evaluate(RtlDeviceBase& device) override {
+  void evaluate(RtlDeviceBase& device, bool rising_edge_only) override {
     // The model runs at the default widths only (constructor): compile-time masks.
     using F = DefaultFormats;
     constexpr auto bits = [](code_t code, const FixedFormat& format) {
       return static_cast<std::uint64_t>(code) & ((std::uint64_t{1} << format.width()) - 1);
     };
     const Inputs& in = inputs;
+    if constexpr (Fixed) {
+      if (in.pin19->read() != fixed_h19 || in.pin20->read() != fixed_a20 || !in.pin34->read())
+        SC_REPORT_ERROR("specular/rtl",
+                        "pins 19, 20 or 34 differ from the constants this specialised "
+                        "synchronous RTL model was verilated with (docs/rtl.md)");
+    }
+    if (rising_edge_only && top.pin28_clk && in.pin28->posedge()) {
+      // The falling edge since the last rising one, where nothing changes.
+      if constexpr (Fixed) {
+        show_clock_low(top);  // verilated_clock.h
+      } else {
+        top.pin28_clk = 0;
+        top.eval();
+      }
+    }
     top.pin17_cos = static_cast<std::uint32_t>(bits(in.pin17->read(), F::cos));
     top.pin18_n = static_cast<std::uint16_t>(bits(in.pin18->read(), F::n));
     top.pin19_h = static_cast<std::uint16_t>(bits(in.pin19->read(), F::mux4));

@@ -6,28 +6,24 @@
 #include "Vspecular_device_sync_cc_fst___024root.h"
 
 #include "specular/twin/rtl_sync_device.h"
+#include "rtl_sync_fixed.h"
+#include "rtl_sync_nets.h"
 
 namespace specular {
-namespace {
-
-/// The sequencer's pass flag: the one net only the synchronous variant has.
-struct SyncNets {
-  using Device = RtlSyncDevice;
-  std::uint64_t pass1;
-
-  template <class Top, class Update>
-  void update(Device& device, const Top& top, const Update& update) {
-    update(pass1, top.obs_pass1, [&](std::uint64_t x) { device.pass1.write(x != 0); });
-  }
-};
-
-}  // namespace
 
 RtlSyncDevice::RtlSyncDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
     : RtlDeviceBase(name, config, real_views,
                     {"RtlSyncDevice", "synchronous RTL twin", "waveforms/specular_rtl_sync.gtkw",
-                     &RtlModel<Vspecular_device_sync_cc, SyncNets>::make,
-                     &RtlModel<Vspecular_device_sync_cc_fst, SyncNets, VerilatedFstC>::make}) {}
+                     &make_model, &RtlModel<Vspecular_device_sync_cc, SyncNets>::make,
+                     &RtlModel<Vspecular_device_sync_cc_fst, SyncNets, VerilatedFstC>::make, true}) {}
+
+std::unique_ptr<RtlDeviceBase::Verilated> RtlSyncDevice::make_model(const Config& config) {
+  // The specialised verilation when this configuration has one (untraced: open_vcd
+  // replaces it by the general traced model), the general model otherwise.
+  if (const RtlSyncFixedModel* fixed = rtl_sync_fixed_model(config))
+    return fixed->make_device_model(config);
+  return RtlModel<Vspecular_device_sync_cc, SyncNets>::make(config);
+}
 
 RtlSyncDevice::~RtlSyncDevice() = default;
 

@@ -23,7 +23,9 @@ namespace specular {
 /// with any other widths is refused with std::invalid_argument.
 class RtlCycleModel {
  public:
-  explicit RtlCycleModel(const Config& config = Config{});
+  /// A Config with a specialised verilation (docs/rtl.md, "Specialised verilation")
+  /// runs on it unless `allow_fixed` is false.
+  explicit RtlCycleModel(const Config& config = Config{}, bool allow_fixed = true);
   ~RtlCycleModel();
   RtlCycleModel(const RtlCycleModel&) = delete;
   RtlCycleModel& operator=(const RtlCycleModel&) = delete;
@@ -42,6 +44,8 @@ class RtlCycleModel {
   std::uint64_t half_periods() const;
 
   const Config& config() const { return config_; }
+  /// Whether this model runs a verilation specialised to config() (FIXED_CONFIG = 1).
+  bool fixed() const;
 
   class Engine;  // the verilated model behind it (rtl_cycle_model.cpp)
 

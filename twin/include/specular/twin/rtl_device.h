@@ -27,6 +27,9 @@ class RtlDevice : public RtlDeviceBase {
 
   /// Watches the pins and control unit 16, as in SpecularDevice (report_ids.h).
   ProtocolChecker protocol_checker{"protocol_checker"};
+
+ private:
+  static std::unique_ptr<Verilated> make_model(const Config& config);
 };
 
 using RtlHarness = DeviceHarness<RtlDevice>;

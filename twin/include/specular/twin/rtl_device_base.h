@@ -53,6 +53,9 @@ class RtlDeviceBase : public DevicePins {
   void allow_tracing(bool fst = false);
   /// Writes the last instant and closes the file open_vcd() opened (if any).
   void close_vcd();
+  /// Whether the model behind the pins is a verilation specialised to config()
+  /// (docs/rtl.md, "Specialised verilation"): without tracing (allow_tracing, open_vcd).
+  bool fixed() const;
 
   // ---- what the harness watches (observation outputs both twins have) ----
   wire select36{"select36"};
@@ -70,8 +73,13 @@ class RtlDeviceBase : public DevicePins {
     const char* class_name;  ///< "RtlDevice": names open_vcd in its error
     const char* twin_name;   ///< "RTL twin": names the twin in constructor errors
     const char* gtkw;        ///< the GTKWave save file for its VCD
-    std::unique_ptr<Verilated> (*make_model)(const Config&);
-    std::unique_ptr<Verilated> (*make_fst_model)(const Config&);  ///< --trace-fst (issue 27)
+    std::unique_ptr<Verilated> (*make_model)(const Config&);         ///< the fastest for a Config
+    std::unique_ptr<Verilated> (*make_traced_model)(const Config&);  ///< one that traces VCD
+    std::unique_ptr<Verilated> (*make_fst_model)(const Config&);     ///< --trace-fst (issue 27)
+    /// Every input is a level sampled at the rising clock edge and nothing changes at
+    /// the falling one (the synchronous variant): without a trace the model is evaluated
+    /// at rising edges only.
+    bool synchronous = false;
   };
 
   /// Refuses a Config the model was not verilated for and `real_views` (accepted for
@@ -81,8 +89,9 @@ class RtlDeviceBase : public DevicePins {
                 const Variant& variant);
 
  private:
-  template <class Top, class Nets, class Writer>
+  template <class Top, class Nets, class Writer, bool Fixed>
   friend struct RtlModel;
+  friend struct RtlSyncFixedModel;
 
   void before_end_of_elaboration() override;
   void end_of_elaboration() override;
@@ -90,13 +99,13 @@ class RtlDeviceBase : public DevicePins {
   void end_of_simulation() override;
   void evaluate();
   void open_writer(const std::string& path);
+  void evaluate_at_rising_edge();  ///< Variant::synchronous without tracing
 
+  Variant variant_;
   const char* class_name_;
   Config config_;
   Formats formats_;
   std::unique_ptr<Verilated> rtl_;
-  std::unique_ptr<Verilated> (*make_model_)(const Config&);
-  std::unique_ptr<Verilated> (*make_fst_model_)(const Config&);
   std::string vcd_path_;
   bool traceable_ = false;  ///< open_vcd() may be called during the simulation
 };

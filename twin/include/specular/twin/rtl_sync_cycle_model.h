@@ -22,9 +22,15 @@ namespace specular {
 ///
 /// Verilated at the default widths (docs/design.md) only: a Config with other widths
 /// is refused with std::invalid_argument, as is a device the core refuses.
+///
+/// Two kinds of verilation: the general model, whose configuration (pins 19, 20, 34,
+/// saturation, ROM 38 bank) is a set of inputs, and specialised ones with it fixed as
+/// Verilog parameters (docs/rtl.md, "Specialised verilation"; the default device's
+/// always, others with the CMake list SPECULAR_RTL_SYNC_FIXED). A Config that matches a
+/// specialised build runs on it unless `allow_fixed` is false.
 class RtlSyncCycleModel {
  public:
-  explicit RtlSyncCycleModel(const Config& config = Config{});
+  explicit RtlSyncCycleModel(const Config& config = Config{}, bool allow_fixed = true);
   ~RtlSyncCycleModel();
   RtlSyncCycleModel(const RtlSyncCycleModel&) = delete;
   RtlSyncCycleModel& operator=(const RtlSyncCycleModel&) = delete;
@@ -45,6 +51,8 @@ class RtlSyncCycleModel {
   std::uint64_t half_periods() const;
 
   const Config& config() const { return config_; }
+  /// Whether this model runs a verilation specialised to config() (FIXED_CONFIG = 1).
+  bool fixed() const;
 
   class Engine;  // the verilated model behind it (rtl_sync_cycle_model.cpp)
 
@@ -53,5 +61,9 @@ class RtlSyncCycleModel {
   std::unique_ptr<Engine> engine_;
   std::vector<double> cycles_;
 };
+
+/// The configurations a specialised verilation of the synchronous variant was built for
+/// (default widths): the default device, and those SPECULAR_RTL_SYNC_FIXED lists.
+std::vector<Config> rtl_sync_fixed_configs();
 
 }  // namespace specular

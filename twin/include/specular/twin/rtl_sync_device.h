@@ -28,6 +28,9 @@ class RtlSyncDevice : public RtlDeviceBase {
 
   // ---- what the harness watches besides RtlDeviceBase's (observation outputs) ----
   wire pass1{"pass1"};
+
+ private:
+  static std::unique_ptr<Verilated> make_model(const Config& config);
 };
 
 using RtlSyncHarness = DeviceHarness<RtlSyncDevice>;

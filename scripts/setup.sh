@@ -26,6 +26,8 @@ set -euo pipefail
 #   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/silicon.sh, gatesim.sh,
 #                                       docs/silicon.md): the OSU 0.18 um standard cells
 #                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
+#   nlohmann-json3-dev                  JSON for specular_tb's --format json and the partial
+#                                       results of sharded runs (--shard, --partial, --merge)
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev
@@ -37,6 +39,7 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev
   verilator iverilog yosys
   qflow-tech-osu018 opensta bc
+  nlohmann-json3-dev
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "json_report.h"
 #include "run_models.h"
 #include "usage_error.h"
 
@@ -185,95 +186,7 @@ class CsvReport : public Report {
   std::unique_ptr<Formats> formats_;
 };
 
-// ---- JSON --------------------------------------------------------------------
-class JsonReport : public Report {
- public:
-  explicit JsonReport(std::ostream& out) : out_(out) {}
-  void begin(const RunDescription& run) override {
-    formats_ = std::make_unique<Formats>(run.config.widths);
-    const Formats& f = *formats_;
-    out_ << "{\n  \"tool\": \"specular_tb\",\n  \"settings\": {\"model\": \"" << run.model
-         << "\", \"stimulus\": \"" << escape(run.stimulus) << "\", \"normalisation\": \""
-         << to_string(run.config.normalisation) << "\", \"saturation\": \""
-         << to_string(run.config.saturation) << "\", \"constants\": \""
-         << to_string(run.config.constants) << "\", \"clock_period_ps\": " << run.clock_period_ps
-         << ", \"operations\": " << run.operations << ",\n    \"formats\": {\"cos\": \""
-         << f.cos.name() << "\", \"reg9\": \"" << f.reg9.name() << "\", \"rom38\": \""
-         << f.rom38.name() << "\", \"norm\": \"" << f.norm.name() << "\", \"out\": \""
-         << f.out.name() << "\"}},\n  \"results\": [";
-  }
-  void row(const Comparison& c) override {
-    const HexCodes hex(c.result, *formats_);
-    out_ << (first_ ? "\n" : ",\n") << "    {\"cos\": ";
-    first_ = false;
-    put_real(out_, c.stimulus.cos);
-    out_ << ", \"n\": " << c.stimulus.n << ", \"r\": " << c.stimulus.rgb[0]
-         << ", \"g\": " << c.stimulus.rgb[1] << ", \"b\": " << c.stimulus.rgb[2];
-    const std::pair<const char*, double> reals[] = {
-        {"cos_q", c.ref.cos_q},       {"approx", c.approx},         {"approx_ref", c.ref.approx_ref},
-        {"norm", c.norm},             {"norm_ref", c.ref.norm_ref}, {"norm_exact", c.ref.norm_exact},
-        {"out_r", c.out[0]},          {"out_g", c.out[1]},          {"out_b", c.out[2]},
-        {"out_r_ref", c.ref.out_ref[0]}, {"out_g_ref", c.ref.out_ref[1]},
-        {"out_b_ref", c.ref.out_ref[2]}, {"cycles", c.cycles}};
-    for (const auto& [key, value] : reals) {
-      out_ << ", \"" << key << "\": ";
-      put_real(out_, value);
-    }
-    out_ << ", \"reg1_hex\": \"" << hex.reg1 << "\", \"reg9_pass1_hex\": \"" << hex.reg9_pass1
-         << "\", \"reg9_pass2_hex\": \"" << hex.reg9_pass2 << "\", \"pin24_hex\": \""
-         << hex.pins[0] << "\", \"pin25_hex\": \"" << hex.pins[1] << "\", \"pin26_hex\": \""
-         << hex.pins[2] << "\", \"pass\": " << (c.pass() ? "true" : "false") << '}';
-  }
-  void end(const Summary& s, double) override {
-    out_ << (first_ ? "],\n" : "\n  ],\n") << "  \"summary\": {\"count\": " << s.count
-         << ", \"failures\": " << s.failures << ", \"pass\": " << (s.pass() ? "true" : "false")
-         << ",\n    \"failures_by_check\": {\"approx\": " << s.approx_failures
-         << ", \"norm\": " << s.norm_failures << ", \"out\": " << s.out_failures
-         << ", \"cycles\": " << s.cycles_failures << "},\n";
-    worst("max_approx_error", s.approx, true);
-    worst("max_norm_error", s.norm, true);
-    worst("max_norm_exact_error", s.norm_exact, false);
-    worst("max_out_error", s.out, true);
-    out_ << "    \"cycles_min\": ";
-    put_real(out_, s.cycles_min);
-    out_ << ", \"cycles_max\": ";
-    put_real(out_, s.cycles_max);
-    out_ << "}\n}\n";
-  }
-
- private:
-  void worst(const char* key, const Worst& w, bool with_tolerance) {
-    out_ << "    \"" << key << "\": {\"value\": ";
-    put_real(out_, w.error);
-    out_ << ", \"cos_q\": ";
-    put_real(out_, w.cos_q);
-    out_ << ", \"n\": " << w.n;
-    if (with_tolerance) {
-      out_ << ", \"tolerance_used\": ";
-      put_real(out_, w.tolerance_used);
-    }
-    out_ << "},\n";
-  }
-  static std::string escape(const std::string& text) {
-    std::string s;
-    for (char ch : text) {
-      if (ch == '"' || ch == '\\') {
-        s += '\\';
-        s += ch;
-      } else if (static_cast<unsigned char>(ch) < 0x20) {
-        char buffer[8];
-        std::snprintf(buffer, sizeof buffer, "\\u%04x", ch);
-        s += buffer;
-      } else {
-        s += ch;
-      }
-    }
-    return s;
-  }
-  std::ostream& out_;
-  std::unique_ptr<Formats> formats_;
-  bool first_ = true;
-};
+// ---- JSON: json_report.cpp (nlohmann-json) -----------------------------------
 
 void worst_line(std::ostream& out, const char* label, const Worst& w, const char* note) {
   out << "  " << std::left << std::setw(26) << label << std::right << " = " << std::setprecision(4)
@@ -322,7 +235,7 @@ std::unique_ptr<Report> make_report(OutputFormat format, std::ostream& out, std:
   switch (format) {
     case OutputFormat::text: return std::make_unique<TextReport>(out);
     case OutputFormat::csv: return std::make_unique<CsvReport>(out, side);
-    case OutputFormat::json: return std::make_unique<JsonReport>(out);
+    case OutputFormat::json: return make_json_report(out);
   }
   return nullptr;
 }

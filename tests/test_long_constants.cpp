@@ -16,6 +16,7 @@
 #include "scoreboard.h"
 #include "specular/core.h"
 #include "support/accuracy_sweep.h"
+#include "support/sharded_sweep.h"
 
 namespace specular {
 namespace {
@@ -37,12 +38,13 @@ TEST_P(ExhaustiveConstants, EveryNAndEveryCosCodeMeetsTheBounds) {
   std::tie(config.constants, config.normalisation, config.saturation) = GetParam();
   const Formats formats(config.widths);
   const auto codes = testing_support::cos_codes(formats, 1);
-  const testing_support::SweepFigures s = testing_support::sweep(config, codes);
+  const testing_support::OperationShard shard = testing_support::operation_shard();
+  const testing_support::SweepFigures s = testing_support::sweep(config, codes, shard);
   const std::string line = testing_support::summary(config, s);
-  std::cout << line << std::endl;
+  std::cout << (shard.whole() ? "" : "shard " + shard.text() + " of n: ") << line << std::endl;
   RecordProperty("accuracy", line);
 
-  EXPECT_EQ(s.evaluations, 1000L * (formats.cos.one() + 1));
+  EXPECT_EQ(s.evaluations, static_cast<long>(shard.covered(n_min, n_max)) * (formats.cos.one() + 1));
   EXPECT_EQ(s.approx_misses, 0) << s.first_miss;
   EXPECT_EQ(s.norm_misses, 0) << s.first_miss;
   EXPECT_EQ(s.out_misses, 0) << s.first_miss;
@@ -88,12 +90,8 @@ TEST_P(ModelSweep, ModelEqualsCoreBitForBitAndMeetsTheBounds) {
   std::size_t mismatches = 0;
   std::string first_mismatch;
 
-  const tb::OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
-    chunk.clear();
-    if (!sweep.next(stimuli, max)) return false;
-    for (const tb::Stimulus& s : stimuli) chunk.push_back(s.operands);
-    return true;
-  };
+  const testing_support::OperationShard shard = testing_support::operation_shard();
+  const tb::OperandSource source = testing_support::sharded_sweep(sweep, stimuli, shard);
   const tb::ResultSink sink = [&](const std::vector<Operands>& chunk,
                                   const std::vector<Result>& results,
                                   const std::vector<double>& cycles) {
@@ -117,7 +115,7 @@ TEST_P(ModelSweep, ModelEqualsCoreBitForBitAndMeetsTheBounds) {
   run.config = settings.config;
   tb::write_summary_text(text, s, run, -1);
   std::cout << text.str() << std::flush;
-  EXPECT_EQ(s.count, 1021000u);
+  EXPECT_EQ(s.count, 1021u * shard.covered(n_min, n_max));
   EXPECT_EQ(mismatches, 0u) << "first at " << first_mismatch;
   EXPECT_EQ(s.failures, 0u) << text.str();
 }

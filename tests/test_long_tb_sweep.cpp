@@ -19,6 +19,7 @@
 #include "scoreboard.h"
 #include "specular/core.h"
 #include "support/policies.h"
+#include "support/sharded_sweep.h"
 
 namespace specular {
 namespace tb {
@@ -38,12 +39,8 @@ void sweep_against_core(Model model, const Config& config, double expected_cycle
   std::size_t mismatches = 0;
   std::string first_mismatch;
 
-  const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
-    chunk.clear();
-    if (!sweep.next(stimuli, max)) return false;
-    for (const Stimulus& s : stimuli) chunk.push_back(s.operands);
-    return true;
-  };
+  const testing_support::OperationShard shard = testing_support::operation_shard();
+  const OperandSource source = testing_support::sharded_sweep(sweep, stimuli, shard);
   const ResultSink sink = [&](const std::vector<Operands>& chunk, const std::vector<Result>& results,
                               const std::vector<double>& cycles) {
     for (std::size_t i = 0; i < results.size(); ++i) {
@@ -70,7 +67,7 @@ void sweep_against_core(Model model, const Config& config, double expected_cycle
             << text.str() << std::flush;
   ::testing::Test::RecordProperty("summary", text.str());
 
-  EXPECT_EQ(s.count, 1021000u);
+  EXPECT_EQ(s.count, 1021u * shard.covered(n_min, n_max));
   EXPECT_EQ(mismatches, 0u) << "first at " << first_mismatch;
   EXPECT_EQ(s.failures, 0u) << text.str();
   EXPECT_EQ(s.cycles_min, expected_cycles);

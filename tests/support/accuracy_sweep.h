@@ -14,6 +14,7 @@
 
 #include "specular/core.h"
 #include "specular/reference.h"
+#include "operation_shard.h"
 
 namespace specular {
 namespace testing_support {
@@ -72,8 +73,10 @@ inline double pass1_tolerance(const Formats& f, unsigned n) {
   return n * rom5 + std::ldexp(0.5, -w.reg9_frac_bits) + 1e-12 * n;
 }
 
-/// Runs the Core on every n in 1..1000 × `codes`, intensities {I_max, I_max/2, 1}.
-inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes) {
+/// Runs the Core on every n in 1..1000 of `shard` (all of them by default) × `codes`,
+/// intensities {I_max, I_max/2, 1}.
+inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes,
+                          const OperationShard& shard = {}) {
   const Core core(config);
   const Formats& f = core.formats();
   const int F = f.cos.frac_bits;
@@ -88,6 +91,7 @@ inline SweepFigures sweep(const Config& config, const std::vector<code_t>& codes
     }
   };
   for (unsigned n = n_min; n <= n_max; ++n) {
+    if (!shard.covers(n)) continue;
     const double kn = reference::k(n, config.normalisation, config.constants, F);
     const double s_scale = constant_values(config.constants).s();
     const double a = constant_values(config.constants).a();

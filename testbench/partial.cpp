@@ -91,14 +91,7 @@ Json partial_json(const Json& settings, const Shard& shard, const Summary& summa
 
 namespace {
 
-struct PartialFile {
-  std::string path;
-  Json json;
-  Shard shard;
-  Summary summary;
-};
-
-PartialFile read_partial(const std::string& path) {
+PartialFile read_partial(const std::string& path, const std::string& kind, bool tb_summary) {
   std::ifstream in(path);
   if (!in) throw UsageError("--merge: cannot read '" + path + "'");
   PartialFile p;
@@ -109,8 +102,9 @@ PartialFile read_partial(const std::string& path) {
     throw UsageError("--merge: '" + path + "' is not JSON: " + e.what());
   }
   try {
-    if (!p.json.is_object() || p.json.value("kind", "") != partial_kind)
-      throw UsageError("--merge: '" + path + "' is not a partial result of specular_tb --partial");
+    if (!p.json.is_object() || p.json.value("kind", "") != kind)
+      throw UsageError("--merge: '" + path + "' is not a " + kind + " (its kind: " +
+                       (p.json.is_object() && p.json.contains("kind") ? dump_json(p.json["kind"]) : "none") + ")");
     if (p.json.at("version").get<int>() != partial_version)
       throw UsageError("--merge: '" + path + "' is a version " + p.json.at("version").dump() +
                        " partial; this specular_tb reads version " + std::to_string(partial_version));
@@ -120,7 +114,8 @@ PartialFile read_partial(const std::string& path) {
       throw UsageError("--merge: '" + path + "' names shard " + p.shard.text() + ", not I/N with I < N");
     p.json.at("settings");
     p.json.at("commit").get<std::string>();
-    p.summary = summary_from_json(p.json.at("summary"));
+    if (tb_summary) p.summary = summary_from_json(p.json.at("summary"));
+    else p.json.at("summary");
   } catch (const UsageError&) {
     throw;
   } catch (const std::exception& e) {
@@ -137,6 +132,12 @@ std::string first_difference(const Json& a, const Json& b) {
   for (const auto& [key, value] : b.items())
     if (!a.contains(key)) return key + " (none) vs " + dump_json(value);
   return "?";
+}
+
+/// Equal as JSON values, whatever the order of the keys (a file rewritten by another
+/// tool may sort them).
+bool same_content(const Json& a, const Json& b) {
+  return nlohmann::json::parse(dump_json(a)) == nlohmann::json::parse(dump_json(b));
 }
 
 void merge_worst(Worst& into, const Worst& w, bool first) {
@@ -168,6 +169,46 @@ RunDescription description_from_settings(const Json& s) {
 
 }  // namespace
 
+std::vector<PartialFile> read_complete_set(const std::vector<std::string>& files,
+                                          const std::string& kind, bool tb_summary) {
+  if (files.empty()) throw UsageError("--merge needs the partial files of every shard (FILE...)");
+  std::vector<PartialFile> parts;
+  for (const std::string& f : files) parts.push_back(read_partial(f, kind, tb_summary));
+  const PartialFile& first = parts.front();
+  const std::size_t count = first.shard.count;
+  std::vector<const PartialFile*> by_index(count, nullptr);
+  for (const PartialFile& p : parts) {
+    if (p.json.at("commit") != first.json.at("commit"))
+      throw UsageError("--merge: '" + p.path + "' comes from commit " + p.json.at("commit").get<std::string>() +
+                       ", '" + first.path + "' from " + first.json.at("commit").get<std::string>() +
+                       ": shards of one run come from one build");
+    if (!same_content(p.json.at("settings"), first.json.at("settings")))
+      throw UsageError("--merge: '" + p.path + "' has other settings than '" + first.path +
+                       "' (" + first_difference(p.json.at("settings"), first.json.at("settings")) + ")");
+    if (p.shard.count != count)
+      throw UsageError("--merge: '" + p.path + "' is shard " + p.shard.text() + " of " +
+                       std::to_string(p.shard.count) + ", '" + first.path + "' one of " +
+                       std::to_string(count) + " shards");
+    if (by_index[p.shard.index] != nullptr)
+      throw UsageError("--merge: shard " + p.shard.text() + " is given twice: '" +
+                       by_index[p.shard.index]->path + "' and '" + p.path + "'");
+    by_index[p.shard.index] = &p;
+  }
+  std::string missing;
+  std::size_t missing_count = 0;
+  for (std::size_t i = 0; i < count; ++i)
+    if (by_index[i] == nullptr) {
+      if (++missing_count <= 10) missing += (missing.empty() ? "" : ", ") + Shard{i, count}.text();
+    }
+  if (missing_count > 0)
+    throw UsageError("--merge: " + std::to_string(missing_count) + " of " + std::to_string(count) +
+                     " shards missing: " + missing + (missing_count > 10 ? ", ..." : ""));
+
+  std::vector<PartialFile> ordered;
+  for (const PartialFile* p : by_index) ordered.push_back(*p);
+  return ordered;
+}
+
 int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   std::vector<std::string> files;
   OutputFormat format = OutputFormat::text;
@@ -192,38 +233,11 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
   if (format == OutputFormat::csv)
     throw UsageError("--merge: --format csv is not available (a merge has no rows): text or json");
 
-  std::vector<PartialFile> parts;
-  for (const std::string& f : files) parts.push_back(read_partial(f));
+  const std::vector<PartialFile> parts = read_complete_set(files, partial_kind, true);
   const PartialFile& first = parts.front();
   const std::size_t count = first.shard.count;
-  std::vector<const PartialFile*> by_index(count, nullptr);
-  for (const PartialFile& p : parts) {
-    if (p.json.at("commit") != first.json.at("commit"))
-      throw UsageError("--merge: '" + p.path + "' comes from commit " + p.json.at("commit").get<std::string>() +
-                       ", '" + first.path + "' from " + first.json.at("commit").get<std::string>() +
-                       ": shards of one run come from one build");
-    if (p.json.at("settings") != first.json.at("settings"))
-      throw UsageError("--merge: '" + p.path + "' has other settings than '" + first.path +
-                       "' (" + first_difference(p.json.at("settings"), first.json.at("settings")) + ")");
-    if (p.shard.count != count)
-      throw UsageError("--merge: '" + p.path + "' is shard " + p.shard.text() + " of " +
-                       std::to_string(p.shard.count) + ", '" + first.path + "' one of " +
-                       std::to_string(count) + " shards");
-    if (by_index[p.shard.index] != nullptr)
-      throw UsageError("--merge: shard " + p.shard.text() + " is given twice: '" +
-                       by_index[p.shard.index]->path + "' and '" + p.path + "'");
-    by_index[p.shard.index] = &p;
-  }
-  std::string missing;
-  std::size_t missing_count = 0;
-  for (std::size_t i = 0; i < count; ++i)
-    if (by_index[i] == nullptr) {
-      if (++missing_count <= 10) missing += (missing.empty() ? "" : ", ") + Shard{i, count}.text();
-    }
-  if (missing_count > 0)
-    throw UsageError("--merge: " + std::to_string(missing_count) + " of " + std::to_string(count) +
-                     " shards missing: " + missing + (missing_count > 10 ? ", ..." : ""));
-
+  std::vector<const PartialFile*> by_index;
+  for (const PartialFile& p : parts) by_index.push_back(&p);
   const Json& settings = first.json.at("settings");
   RunDescription run;
   try {

@@ -45,6 +45,21 @@ Json partial_json(const Json& settings, const Shard& shard, const Summary& summa
 /// The user + system CPU time of this process, in seconds.
 double process_cpu_seconds();
 
+/// One partial file as read.
+struct PartialFile {
+  std::string path;
+  Json json;
+  Shard shard;
+  Summary summary;  ///< specular_tb's partials only
+};
+
+/// Reads `files` (partials of `kind`) and checks they are one complete set: the same
+/// commit, the same settings, the same count N and every index 0..N-1 exactly once.
+/// Returns them in index order; throws UsageError naming the offending file or shard.
+/// `tb_summary`: also read specular_tb's summary (partial_kind).
+std::vector<PartialFile> read_complete_set(const std::vector<std::string>& files,
+                                          const std::string& kind, bool tb_summary);
+
 /// `specular_tb --merge FILE... [--format text|json] [--output FILE] [--partial FILE]`:
 /// `args` are those after --merge. Returns the exit status (0 PASS, 1 FAIL, 2 refused).
 int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);

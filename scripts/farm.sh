@@ -277,9 +277,10 @@ case "$command" in
     ;;
   resubmit)
     (($# >= 2)) || die "usage: farm.sh resubmit DIR [options]"
-    out_dir=$(cd "$2" && pwd) || die "resubmit: no folder '$2'"
+    run_dir=$(cd "$2" && pwd) || die "resubmit: no folder '$2'"
     shift 2
     parse_options "$@"
+    out_dir=$run_dir
     ids=()
     while IFS=$'\t' read -r id _; do
       grep -qs '"exit": 0,' "$out_dir/status/$id.json" || ids+=("$id")

@@ -28,6 +28,9 @@ set -euo pipefail
 #                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
 #   nlohmann-json3-dev                  JSON for specular_tb's --format json and the partial
 #                                       results of sharded runs (--shard, --partial, --merge)
+#   slurm-wlm, munge, jq                scripts/farm.sh on Slurm, scripts/slurm_cluster.sh (a
+#                                       single-node cluster) and its test tests/farm/farm_test.sh
+#                                       (jq compares the merged and unsharded JSON)
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev
@@ -40,6 +43,7 @@ PACKAGES=(
   verilator iverilog yosys
   qflow-tech-osu018 opensta bc
   nlohmann-json3-dev
+  slurm-wlm munge jq
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

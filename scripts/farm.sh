@@ -259,6 +259,7 @@ case "$command" in
   submit)
     (($# >= 2)) || die "usage: farm.sh submit REGRESSION [options]"
     regression=$2
+    [[ $regression == smoke || $regression == full ]] || die "unknown regression '$regression' (allowed: smoke, full)"
     shift 2
     parse_options "$@"
     [[ -x $build/testbench/specular_tb && -x $build/testbench/specular_prove ]] ||

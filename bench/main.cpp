@@ -50,6 +50,11 @@ const std::vector<Model>& models() {
   static const std::vector<Model> all = {
       {"pow", [](const Plan& p) { measure_pow(p, "pow"); }, 8'000'000, 200'000, 5, "std::pow(c, n) in double: the yardstick"},
       {"core", measure_core, 16'000'000, 200'000, 5, "bit-accurate core (Core::run)"},
+      // specular_tb --model core --format csv/json per row: core, comparison, writer.
+      {"core_csv", [](const Plan& p) { measure_rows(p, "core_csv", false); }, 2'000'000, 50'000, 3,
+       "specular_tb's CSV rows with the core model (core + comparison + writer)"},
+      {"core_json", [](const Plan& p) { measure_rows(p, "core_json", true); }, 2'000'000, 50'000, 3,
+       "specular_tb's JSON rows with the core model (core + comparison + writer)"},
       {"pin_vcd_off",
        [](const Plan& p) { measure_pin(p, "pin_vcd_off", false, Trace::off); },
        400'000, 8192, 1, "pin-level device, random n/RGB every result (3 T), no trace"},
@@ -254,6 +259,10 @@ void add_ratios(Round& round, std::vector<std::string>& order) {
   add("pow_yardstick_rate", pow_rate, "Mevals/s");
   for (const Model& m : models())
     if (m.name != "pow" && m.ratio && rate(m.name) > 0) add(m.name + "_vs_pow", rate(m.name) / pow_rate, "x");
+  if (rate("core") > 0 && rate("core_csv") > 0) {
+    add("core_csv_vs_core", rate("core_csv") / rate("core"), "x");
+    add("core_json_vs_core", rate("core_json") / rate("core"), "x");
+  }
   if (rate("pin_vcd_on") > 0) add("vcd_slowdown", rate("pin_vcd_off") / rate("pin_vcd_on"), "x");
   if (rate("pin_vcd_real_views") > 0)
     add("vcd_real_views_slowdown", rate("pin_vcd_off") / rate("pin_vcd_real_views"), "x");

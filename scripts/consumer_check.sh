@@ -4,10 +4,14 @@
 #      it, and checks the prefix holds only the libraries, their headers and the package,
 #      and names no file of the build tree or of the folder it was installed into;
 #   2. compiles every installed header alone under -Wall -Wextra -Wpedantic -Werror,
-#      not as a SYSTEM header;
+#      not as a SYSTEM header, with what find_package(SpecularUnit) gives a consumer: the
+#      SystemC BUILD was built with (recorded in the package, issue 30), which every
+#      configure below must report using, the add_subdirectory one included;
 #   3. configures, builds and runs examples/consumer with find_package(SpecularUnit)
 #      (COMPONENTS rtl when the build has the twin) against that prefix: the ten-line
-#      example, and the example SoC platform with each target (lt, pin, rtl);
+#      example, a plain int main() on SpecularUnit::core that must need no SystemC
+#      library, and the example SoC platform with each target (lt, pin, rtl, rtl-sync),
+#      each also under its strict initiator (--strict: the delay never shrinks);
 #   4. configures, builds and runs the same consumer with add_subdirectory on the
 #      source tree (lt and pin: the twin's build is not repeated there).
 # Usage: scripts/consumer_check.sh [BUILD_DIR]   (default: build, relative to the repo)
@@ -26,7 +30,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/specular_consumer.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 rtl=$(sed -n 's/^SPECULAR_BUILD_RTL:BOOL=//p' "$build/CMakeCache.txt")
-case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl" ;; *) rtl=OFF; targets="lt pin" ;; esac
+case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl rtl-sync" ;; *) rtl=OFF; targets="lt pin" ;; esac
 
 echo "== install $build, move it to $work/prefix (rtl component: $rtl)"
 cmake --build "$build" --target specular -j "$jobs"
@@ -44,7 +48,7 @@ if named=$( (grep -rlF --include='*.cmake' -e "$build/" -e "$work/install_first"
 fi
 (cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
 echo "   ... $(wc -l <"$work/files.txt") files"
-unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake)$' \
+unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake)$' \
              "$work/files.txt" || true)
 if [[ -n "$unexpected" ]]; then
   echo "consumer_check: FAIL: the install holds more than the IP:" >&2
@@ -52,45 +56,109 @@ if [[ -n "$unexpected" ]]; then
   exit 1
 fi
 grep -q '^\./include/specular/specular\.h$' "$work/files.txt"
+grep -q '^\./lib[^/]*/libspecular_core\.a$' "$work/files.txt"  # SpecularUnit::core (issue 29)
 if [[ $rtl == ON ]]; then grep -q '^\./include/specular/twin/rtl_target\.h$' "$work/files.txt"; fi
 
-echo "== every installed header alone, -Wall -Wextra -Wpedantic -Werror, not SYSTEM"
-cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
-systemc_flags=$(pkg-config --cflags systemc 2>/dev/null || true)
-headers=0
-while read -r header; do
-  printf '#include <%s>\n' "${header#./include/}" >"$work/header.cpp"
-  if ! "${cxx:-c++}" -std=c++17 -Wall -Wextra -Wpedantic -Werror -fsyntax-only \
-       -I"$work/prefix/include" $systemc_flags "$work/header.cpp" 2>"$work/header.log"; then
-    echo "consumer_check: FAIL: ${header#./include/} is not warning-free:" >&2
-    cat "$work/header.log" >&2
+# The SystemC BUILD was built with, as the package records it (cmake/SpecularSystemC.cmake):
+# every step below must use that one, the add_subdirectory consumer included.
+config=$(find "$work/prefix" -path '*/cmake/SpecularUnit/SpecularUnitConfig.cmake' | head -1)
+recorded() { sed -n "s/^set(SpecularUnit_SYSTEMC_$1 \"\([^\"]*\)\").*/\1/p" "$config"; }
+systemc_by=$(recorded FOUND_BY)
+systemc_at=$(recorded LOCATION)
+systemc_api=$(recorded API)
+echo "   SystemC of $build: $(recorded VERSION) for C++$(recorded CXX) ($systemc_api, $systemc_by at $systemc_at)"
+if [[ -z $systemc_api ]]; then
+  echo "consumer_check: FAIL: the package records no sc_api_version for its SystemC ($config)" >&2
+  exit 1
+fi
+# How a consumer of the source tree names that SystemC.
+systemc_args=()
+case "$systemc_by" in
+  "CMake package") systemc_args=(-DSystemCLanguage_DIR="$systemc_at") ;;
+  pkg-config) export PKG_CONFIG_PATH="$systemc_at${PKG_CONFIG_PATH:+:$PKG_CONFIG_PATH}" ;;
+esac
+expect_systemc() {  # $1: a configure log that must name the recorded SystemC
+  if ! grep -qF "$systemc_api" "$1"; then
+    echo "consumer_check: FAIL: this configure did not use the SystemC $build was built with ($systemc_api):" >&2
+    grep -i systemc "$1" >&2 || cat "$1" >&2
     exit 1
   fi
+}
+
+echo "== every installed header alone, -Wall -Wextra -Wpedantic -Werror, not SYSTEM, through the package"
+# One source per header, each including only that header, compiled with what
+# find_package(SpecularUnit) gives a consumer: the package's SystemC and its flags.
+mkdir -p "$work/headers/src"
+headers=0
+while read -r header; do
+  printf '#include <%s>\n' "${header#./include/}" >"$work/headers/src/header_$headers.cpp"
   headers=$((headers + 1))
 done < <(grep '^\./include/.*\.h$' "$work/files.txt")
+components=""
+header_targets="SpecularUnit::specular"
+if [[ $rtl == ON ]]; then components="COMPONENTS rtl"; header_targets+=" SpecularUnit::twin"; fi
+cat >"$work/headers/CMakeLists.txt" <<CMAKE
+cmake_minimum_required(VERSION 3.16)
+project(specular_headers LANGUAGES CXX)
+set(CMAKE_CXX_STANDARD 17)
+set(CMAKE_CXX_STANDARD_REQUIRED ON)
+set(CMAKE_CXX_EXTENSIONS OFF)
+find_package(SpecularUnit CONFIG REQUIRED $components)
+file(GLOB sources \${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
+add_library(headers OBJECT \${sources})
+target_link_libraries(headers PRIVATE $header_targets)
+# -fsyntax-only: checked, not compiled (the objects are never used; this folder is built once).
+target_compile_options(headers PRIVATE -Wall -Wextra -Wpedantic -Werror -fsyntax-only)
+set_target_properties(headers PROPERTIES NO_SYSTEM_FROM_IMPORTED ON)  # the IP's headers not SYSTEM
+CMAKE
+cxx=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")
+if ! cmake -S "$work/headers" -B "$work/headers/build" -DCMAKE_PREFIX_PATH="$work/prefix" \
+       ${cxx:+-DCMAKE_CXX_COMPILER="$cxx"} >"$work/headers.log" 2>&1; then
+  echo "consumer_check: FAIL: find_package(SpecularUnit) failed:" >&2
+  cat "$work/headers.log" >&2
+  exit 1
+fi
+expect_systemc "$work/headers.log"
+if ! cmake --build "$work/headers/build" -j "$jobs" >>"$work/headers.log" 2>&1; then
+  echo "consumer_check: FAIL: installed headers that do not compile alone without warnings:" >&2
+  grep -E 'error|warning' "$work/headers.log" | head -40 >&2
+  exit 1
+fi
 echo "   $headers headers clean"
 
 run_platforms() {  # $1: the consumer's build folder; the rest: targets
   local dir=$1
   shift
   SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$dir/consumer"
+  # ---- issue 29: the kernel-free core in a plain int main(), no SystemC library ----
+  "$dir/consumer_core" | tail -1
+  if readelf -d "$dir/consumer_core" | grep -q 'NEEDED.*libsystemc'; then
+    echo "consumer_check: FAIL: consumer_core (SpecularUnit::core only) needs libsystemc" >&2
+    exit 1
+  fi
+  # ---- each target also under the strict initiator (--strict) ----
   for target in "$@"; do
-    SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$dir/consumer_platform" --target "$target" 2>&1 |
-      grep -v 'Simulation stopped by user' | sed '/^$/d'
-    [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "consumer_check: FAIL: soc_platform --target $target" >&2; exit 1; }
+    for strict in "" --strict; do
+      SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$dir/consumer_platform" --target "$target" $strict 2>&1 |
+        grep -v 'Simulation stopped by user' | sed '/^$/d'
+      [[ ${PIPESTATUS[0]} -eq 0 ]] || { echo "consumer_check: FAIL: soc_platform --target $target $strict" >&2; exit 1; }
+    done
   done
 }
 
 echo "== consumer against the installed package (targets: $targets)"
 cmake -S "$root/examples/consumer" -B "$work/installed" -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_PREFIX_PATH="$work/prefix" -DSPECULAR_CONSUMER_RTL=$rtl >"$work/configure1.log"
+expect_systemc "$work/configure1.log"
 cmake --build "$work/installed" -j "$jobs" >"$work/build1.log"
 run_platforms "$work/installed" $targets
 
 echo "== consumer with add_subdirectory on $root (targets: lt pin)"
 cmake -S "$root/examples/consumer" -B "$work/subdir" -DCMAKE_BUILD_TYPE=Release \
-      -DSPECULAR_SOURCE_TREE="$root" -DSPECULAR_CONSUMER_RTL=OFF >"$work/configure2.log"
-cmake --build "$work/subdir" --target consumer consumer_platform -j "$jobs" >"$work/build2.log"
+      -DSPECULAR_SOURCE_TREE="$root" -DSPECULAR_CONSUMER_RTL=OFF "${systemc_args[@]}" \
+      >"$work/configure2.log"
+expect_systemc "$work/configure2.log"
+cmake --build "$work/subdir" --target consumer consumer_core consumer_platform -j "$jobs" >"$work/build2.log"
 run_platforms "$work/subdir" lt pin
 
 echo "consumer_check: PASS (installed package with targets $targets, add_subdirectory)"

@@ -22,6 +22,9 @@
 #                       to back at 2 T), 1-8 (default 2)
 #   --specular-tb PATH  the testbench that writes the expected values (default
 #                       build/testbench/specular_tb)
+#   --quiet             no progress lines (drawn on standard error only when it is a
+#                       terminal: periods tried or policies' vectors run, the total,
+#                       rate and time left, by specular_progress beside specular_tb)
 #   --bisect T_STA      find T_sim: the smallest period (to 0.1 ns) at which every vector
 #                       passes, searched from T_STA/4 to 2 T_STA; writes OUT_DIR/tsim.txt
 #   --hazards T_SIM     Fig. 2's hazards at T_SIM and 2 T_SIM: start (27) swept across a
@@ -56,10 +59,12 @@ bisect=""
 hazards=""
 random_set=0
 groups_set=0
+quiet=0
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
+    --quiet) quiet=1; shift ;;
     --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
@@ -150,6 +155,18 @@ compile_tb() {
     "$TB_FILE" "${files[@]}" > "$log" 2>&1
 }
 
+# ---- progress (issue 27): specular_tb's progress line (testbench/progress.h) through
+# the specular_progress tool beside it, one line per period tried or per policy's
+# vectors, on standard error only when it is a terminal and --quiet is not given.
+progress_tool="$(dirname "$specular_tb")/specular_progress"
+progress_started=$SECONDS
+progress() {  # DONE TOTAL UNIT
+  [[ $quiet -eq 0 && -t 2 && -x "$progress_tool" ]] || return 0
+  "$progress_tool" "$1" "$2" "$((SECONDS - progress_started))" "$3" gatesim >&2 || true
+}
+policy_count=$(wc -l < "$out/policies.txt")
+policies_done=0
+
 # run_at PERIOD: every policy's vectors at that period; 0 all pass, 1 a mismatch.
 run_at() {
   local T="$1" dir="$out/T$1" status=0
@@ -166,6 +183,8 @@ run_at() {
       break
     fi
     echo "gatesim.sh: T = $T ns, policy $name: $(grep -m1 PASS "$dir/$name.log")"
+    policies_done=$((policies_done + 1))
+    [[ -n "$bisect" ]] || progress "$policies_done" "$policy_count" "policies' vectors"
   done < "$out/policies.txt"
   return $status
 }
@@ -179,10 +198,17 @@ if [[ -n "$hazards" ]]; then
   hz="$out/hazards"
   mkdir -p "$hz"
   # run_offset T X: 0 pass, 1 fail; the log is $hz/T<T>/x<X>.log
+  # Offset runs: 17 per period and its boundaries' refinements, about 24 a period
+  # (docs/silicon.md), 2 periods: the total is an estimate, raised as runs go past it.
+  offsets_done=0; offsets_total=48
   run_offset() {
-    local log="$hz/T$1/x$2.log"
+    local log="$hz/T$1/x$2.log" status=0
     (cd "$rom_dir" && vvp -n "$hz/T$1/tb.vvp" "+START_OFFSET=$2") > "$log" 2>&1
-    grep -q "PASS" "$log"
+    grep -q "PASS" "$log" || status=1
+    offsets_done=$((offsets_done + 1))
+    (( offsets_done < offsets_total )) || offsets_total=$((offsets_done + 1))
+    progress "$offsets_done" "$offsets_total" "offset runs (total estimated)"
+    return $status
   }
   # refine T A B A_OK: bisect the boundary between offsets A and B to 0.1 ns; A keeps its
   # status A_OK, B the other; both ends go to boundaries.txt.
@@ -238,14 +264,22 @@ fi
 # ---- T_sim: bisection to 0.1 ns between T_sta/4 (must fail) and 2 T_sta (must pass) ----
 lo=$(printf '%.1f' "$(echo "$bisect / 4" | bc -l)")
 hi=$(printf '%.1f' "$(echo "$bisect * 2" | bc -l)")
+# Periods to try: both ends and the halvings of (hi - lo) down to 0.1 ns.
+periods_total=$(echo "l(($hi - $lo) / 0.1) / l(2)" | bc -l | xargs printf '%.0f')
+periods_total=$((periods_total + 2)); periods_done=0
 set +e
 run_at "$hi"; s=$?
+periods_done=1; progress "$periods_done" "$periods_total" "periods tried"
 [[ $s -eq 0 ]] || { echo "gatesim.sh: fails even at 2 T_sta = $hi ns" >&2; exit 1; }
 run_at "$lo"; s=$?
+periods_done=2; progress "$periods_done" "$periods_total" "periods tried"
 [[ $s -eq 1 ]] || { echo "gatesim.sh: passes at T_sta/4 = $lo ns: not sensitive to timing" >&2; exit 1; }
 while (( $(echo "$hi - $lo > 0.1 + 0.0001" | bc) )); do
   mid=$(printf '%.1f' "$(echo "($lo + $hi) / 2" | bc -l)")
   run_at "$mid"; s=$?
+  periods_done=$((periods_done + 1))
+  (( periods_done < periods_total )) || periods_total=$periods_done
+  progress "$periods_done" "$periods_total" "periods tried"
   [[ $s -le 1 ]] || exit 1
   if [[ $s -eq 0 ]]; then hi=$mid; else lo=$mid; fi
 done

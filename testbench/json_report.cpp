@@ -91,55 +91,5 @@ Summary summary_from_json(const Json& j) {
   return s;
 }
 
-namespace {
-
-class JsonReport : public Report {
- public:
-  explicit JsonReport(std::ostream& out) : out_(out) {}
-  void begin(const RunDescription& run) override {
-    formats_ = std::make_unique<Formats>(run.config.widths);
-    out_ << "{\n  \"tool\": \"specular_tb\",\n  \"settings\": " << dump_json(settings_json(run))
-         << ",\n  \"results\": [";
-  }
-  void row(const Comparison& c) override {
-    const Formats& f = *formats_;
-    Json j;
-    j["cos"] = c.stimulus.cos;
-    j["n"] = c.stimulus.n;
-    j["r"] = c.stimulus.rgb[0];
-    j["g"] = c.stimulus.rgb[1];
-    j["b"] = c.stimulus.rgb[2];
-    const std::pair<const char*, double> reals[] = {
-        {"cos_q", c.ref.cos_q},       {"approx", c.approx},         {"approx_ref", c.ref.approx_ref},
-        {"norm", c.norm},             {"norm_ref", c.ref.norm_ref}, {"norm_exact", c.ref.norm_exact},
-        {"out_r", c.out[0]},          {"out_g", c.out[1]},          {"out_b", c.out[2]},
-        {"out_r_ref", c.ref.out_ref[0]}, {"out_g_ref", c.ref.out_ref[1]},
-        {"out_b_ref", c.ref.out_ref[2]}, {"cycles", c.cycles}};
-    for (const auto& [key, value] : reals) j[key] = value;
-    j["reg1_hex"] = hex_code(c.result.reg1, f.cos.width());
-    j["reg9_pass1_hex"] = hex_code(c.result.reg9_pass1, f.reg9.width());
-    j["reg9_pass2_hex"] = hex_code(c.result.reg9_pass2, f.reg9.width());
-    j["pin24_hex"] = hex_code(c.result.out[0], f.out.width());
-    j["pin25_hex"] = hex_code(c.result.out[1], f.out.width());
-    j["pin26_hex"] = hex_code(c.result.out[2], f.out.width());
-    j["pass"] = c.pass();
-    out_ << (first_ ? "\n    " : ",\n    ") << dump_json(j);
-    first_ = false;
-  }
-  void end(const Summary& s, double) override {
-    out_ << (first_ ? "],\n" : "\n  ],\n") << "  \"summary\": " << dump_json(summary_json(s))
-         << "\n}\n";
-  }
-
- private:
-  std::ostream& out_;
-  std::unique_ptr<Formats> formats_;
-  bool first_ = true;
-};
-
-}  // namespace
-
-std::unique_ptr<Report> make_json_report(std::ostream& out) { return std::make_unique<JsonReport>(out); }
-
 }  // namespace tb
 }  // namespace specular

@@ -1,5 +1,8 @@
-// The JSON report of specular_tb (--format json) and the JSON pieces the partial
-// results of sharded runs share with it (partial.h), written with nlohmann-json.
+// The JSON pieces of the partial results of sharded runs (partial.h), written and read
+// with nlohmann-json: the settings and the summary, the latter with each maximum's
+// place and the results' checksum. (specular_tb --format json keeps issue 27's
+// buffered writer, report.cpp, which JSON Lines is built on; its summary object has
+// the same keys as summary_json(summary, false).)
 #pragma once
 
 #include <memory>
@@ -27,10 +30,6 @@ Json summary_json(const Summary& summary, bool places = false);
 /// The inverse of summary_json(summary, true); throws std::exception (nlohmann's
 /// type or out-of-range errors) on a malformed object.
 Summary summary_from_json(const Json& json);
-
-/// The --format json writer: {"tool", "settings", "results": [one object per
-/// computation], "summary"}, results streamed as they come.
-std::unique_ptr<Report> make_json_report(std::ostream& out);
 
 }  // namespace tb
 }  // namespace specular

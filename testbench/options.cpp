@@ -28,10 +28,13 @@ const std::map<std::string, std::string>& valued_options() {
       {"--width", "NAME=VALUE, NAME one of: " + width_names()},
       {"--clock-period", "a time, a multiple of 4 ps in [4 ps, 1 ms], e.g. 10ns"},
       {"--vcd", "a file name"},
-      {"--format", "one of: text, csv, json"},
+      {"--format", "one of: text, csv, json, jsonl"},
       {"--output", "a file name"},
       {"--shard", "I/N, 0 <= I < N (e.g. 0/4)"},          // issue 25: shard.h
       {"--partial", "a file name (JSON partial result)"},  // issue 25: partial.h
+      {"--trace-ops", "FIRST:COUNT, operations FIRST .. FIRST+COUNT-1 (from 0), COUNT >= 1"},
+      {"--trace-failures", "a directory"},
+      {"--trace-failures-max", "a count in [1, 1000]"},
   };
   return options;
 }
@@ -63,7 +66,7 @@ Options parse_options(const std::vector<std::string>& args) {
       o.help = true;
       continue;
     }
-    if (option == "--sweep" || option == "--real-views") {
+    if (option == "--sweep" || option == "--real-views" || option == "--quiet") {
       if (has_value) throw UsageError(option + " takes no value (got '" + value + "')");
     } else {
       const auto known = valued_options().find(option);
@@ -93,6 +96,28 @@ Options parse_options(const std::vector<std::string>& args) {
         // no value
       } else if (option == "--real-views") {
         o.real_views = true;
+      } else if (option == "--quiet") {
+        o.quiet = true;
+      } else if (option == "--trace-ops") {
+        const std::size_t colon = value.find(':');
+        if (colon == std::string::npos)
+          throw UsageError("'" + value + "' is not FIRST:COUNT (operations FIRST .. FIRST+COUNT-1, "
+                           "counted from 0, e.g. 734511:2)");
+        o.trace_first = parse_unsigned64(value.substr(0, colon), "FIRST");
+        o.trace_count = parse_unsigned64(value.substr(colon + 1), "COUNT");
+        if (o.trace_count < 1)
+          throw UsageError("COUNT = " + value.substr(colon + 1) + " is outside the allowed range [1, " +
+                           std::to_string(~std::uint64_t{0}) + "]");
+        o.trace_window = true;
+      } else if (option == "--trace-failures") {
+        if (value.empty()) throw UsageError("the directory name is empty");
+        o.failure_dir = value;
+      } else if (option == "--trace-failures-max") {
+        const std::string range = "[1, " + std::to_string(failure_traces_max) + "]";
+        const long long count = parse_integer(value, "N", range);
+        if (count < 1 || static_cast<unsigned long long>(count) > failure_traces_max)
+          throw UsageError("N = " + value + " is outside the allowed range " + range);
+        o.failure_max = static_cast<std::size_t>(count);
       } else if (option == "--random") {
         const std::string range = "[1, " + std::to_string(random_count_max) + "]";
         const long long count = parse_integer(value, "N", range);
@@ -199,6 +224,16 @@ Options parse_options(const std::vector<std::string>& args) {
                      "waveforms/specular_rtl.gtkw and specular_rtl_sync.gtkw show them as reals)");
   if (o.real_views && o.vcd_path.empty())
     throw UsageError("--real-views needs --vcd FILE (the views exist only in a trace)");
+  if (o.trace_window && o.vcd_path.empty())
+    throw UsageError("--trace-ops needs --vcd FILE (the window is written there)");
+  if (!o.failure_dir.empty() && !pin_level(o.model))
+    throw UsageError("--trace-failures needs --model pin, rtl or rtl-sync (the " +
+                     std::string(to_string(o.model)) + " model has no signals to trace)");
+  if (!o.failure_dir.empty() && !o.vcd_path.empty())
+    throw UsageError("--trace-failures and --vcd: give one (a failing operation's waveform is a "
+                     "file of its own in the directory; --vcd --trace-ops FIRST:COUNT traces a window)");
+  if (seen.count("--trace-failures-max") && o.failure_dir.empty())
+    throw UsageError("--trace-failures-max needs --trace-failures DIR");
   if (!o.vcd_path.empty() && !o.output_path.empty() && o.vcd_path == o.output_path)
     throw UsageError("--vcd and --output name the same file '" + o.vcd_path + "'");
   // issue 25: sharding (shard.h); an input file's size is checked once it is read.
@@ -294,18 +329,37 @@ Model and device:
                             in [4 ps, 1 ms]
 
 Output:
-  --format text|csv|json    text (default): a table and a summary (a sweep prints the
+  --format text|csv|json|jsonl
+                            text (default): a table and a summary (a sweep prints the
                             summary only); csv: one row per computation, summary on
-                            standard error; json: {settings, results[], summary}
+                            standard error; json: {settings, results[], summary};
+                            jsonl: JSON Lines, {tool, settings}, one line per result,
+                            {summary}: readable while the run goes (rows are written
+                            after each batch of 4096; on standard output, as --output
+                            renames its file only when the run is complete)
   --output FILE             write there instead of standard output (written to a
                             temporary file and renamed when complete)
   --vcd FILE                pin model: write a VCD of every pin and net (time unit 1 ps);
                             open it with waveforms/specular.gtkw, which shows the buses
                             as real numbers (GTKWave's fixed-point display). A sweep's
-                            VCD is huge: trace a point, a file or a short --random run.
+                            VCD is huge (1.6 KB an operation): trace a window of it
+                            with --trace-ops, or its failures with --trace-failures.
                             rtl model: Verilator's VCD of the RTL's own nets, named by
                             reference number; open it with waveforms/specular_rtl.gtkw
                             (rtl-sync: waveforms/specular_rtl_sync.gtkw).
+                            A name ending in .fst gives GTKWave's compressed FST
+                            (rtl, rtl-sync: written by Verilator; pin: converted
+                            by GTKWave's vcd2fst when the run ends).
+  --trace-ops FIRST:COUNT   with --vcd: trace only operations FIRST .. FIRST+COUNT-1
+                            (counted from 0, as in the CSV's rows): the file holds the
+                            instants from the first one's inputs to the last one's
+                            35 rising, at the run's own times; the others run untraced
+  --trace-failures DIR      pin, rtl, rtl-sync: each operation out of tolerance is run
+                            again, with the one before it, into DIR/op_INDEX.vcd
+                            (INDEX from 0; times are the replay's); the report names them
+  --trace-failures-max N    at most N such files (default 10, N in [1, 1000])
+  --quiet                   no progress line on standard error (it is shown only when
+                            standard error is a terminal)
   --real-views              with --vcd: also trace cos, register 9, K(n), K*A and pins
                             24-26 as real-valued *_real variables, for viewers that
                             cannot show a bus as fixed point (about 1.3x the trace time)

@@ -39,7 +39,17 @@ struct Options {
   std::string output_path;                         ///< --output; empty = standard output
   Shard shard{};                                   ///< --shard I/N (shard.h); 0/1 = all
   std::string partial_path;                        ///< --partial FILE (partial.h)
+  bool trace_window = false;                       ///< --trace-ops given
+  std::uint64_t trace_first = 0;                   ///< --trace-ops FIRST (from 0)
+  std::uint64_t trace_count = 0;                   ///< --trace-ops COUNT (>= 1)
+  std::string failure_dir;                         ///< --trace-failures DIR
+  std::size_t failure_max = 10;                    ///< --trace-failures-max N
+  bool quiet = false;                              ///< --quiet: no progress line
 };
+
+/// Largest --trace-failures-max: each file is a few kilobytes, the bound keeps a run
+/// whose every operation fails from filling a disk.
+constexpr std::size_t failure_traces_max = 1000;
 
 /// Parses argv[1..] (without the program name). Throws UsageError with a message
 /// that names the option, the bad value and what is allowed.

@@ -12,9 +12,9 @@
 namespace specular {
 namespace tb {
 
-enum class OutputFormat { text, csv, json };
+enum class OutputFormat { text, csv, json, jsonl };
 const char* to_string(OutputFormat format);
-/// "text", "csv" or "json"; throws UsageError naming the value and the choices.
+/// "text", "csv", "json" or "jsonl"; throws UsageError naming the value and the choices.
 OutputFormat parse_output_format(const std::string& text);
 
 /// What the run was, for the report's header.
@@ -39,6 +39,9 @@ class Report {
   virtual ~Report() = default;
   virtual void begin(const RunDescription& run) = 0;
   virtual void row(const Comparison& c) = 0;
+  /// Hands the rows so far to the stream and flushes it (after each batch: a reader
+  /// of a pipe sees them as they come, and a write error shows at once).
+  virtual void flush() {}
   /// `seconds`: wall time of the run (text only: CSV and JSON stay reproducible).
   virtual void end(const Summary& summary, double seconds) = 0;
 };

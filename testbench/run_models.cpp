@@ -1,8 +1,11 @@
 #include "run_models.h"
 
+#include <cstdio>
 #include <exception>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 #include <type_traits>
 
 #include <tlm_utils/simple_initiator_socket.h>
@@ -67,17 +70,115 @@ void kernel_reports_to_stderr(const sc_core::sc_report& report, const sc_core::s
   sc_core::sc_report_handler::default_handler(report, actions & ~sc_core::SC_DISPLAY);
 }
 
+/// SystemC's VCD writer dumps a file's initial values without a time: a viewer puts
+/// them at 0. A file opened during the run gets "#T" before them, T its first instant.
+void stamp_initial_values(const std::string& path, std::uint64_t ps) {
+  if (ps == 0) return;
+  const std::string stamped = path + ".stamped";
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ofstream out(stamped, std::ios::binary | std::ios::trunc);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (line.rfind("$dumpvars", 0) == 0) {
+        out << '#' << ps << '\n' << line << '\n';
+        break;
+      }
+      out << line << '\n';
+    }
+    if (in.peek() != std::char_traits<char>::eof()) out << in.rdbuf();
+    if (!out) throw std::runtime_error("cannot write the trace '" + path + "' (disk full?)");
+  }
+  if (std::rename(stamped.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("cannot write the trace '" + path + "'");
+}
+
+/// A trace file opened and closed during the simulation: the SystemC netlist's
+/// through SystemC's VCD writer, the twins' through Verilator's (RtlDeviceBase).
+template <class Harness>
+class Tracer {
+ public:
+  Tracer(Harness& harness, const std::string& twin_suffix) : harness_(harness), twin_suffix_(twin_suffix) {}
+  ~Tracer() {
+    try {
+      close();
+    } catch (...) {  // a trace left open by a failed run: its error was reported
+    }
+  }
+  /// Before sc_start: every trace will come during the simulation.
+  void prepare() {
+#ifdef SPECULAR_HAS_RTL_TWIN
+    if constexpr (!std::is_same_v<Harness, PinHarness>) harness_.dut.allow_tracing(twin_suffix_ == ".fst");
+#endif
+  }
+  /// `base`: the file name without ".vcd".
+  void open(const std::string& base) {
+    if (open_) return;
+    open_ = true;
+#ifdef SPECULAR_HAS_RTL_TWIN
+    if constexpr (!std::is_same_v<Harness, PinHarness>) {
+      harness_.dut.open_vcd(base + twin_suffix_);
+      return;
+    }
+#endif
+    path_ = base + ".vcd";
+    opened_ps_ = sc_core::sc_time_stamp().value();
+    vcd_ = sc_core::sc_create_vcd_trace_file(base.c_str());
+    vcd_->set_time_unit(1, sc_core::SC_PS);
+    harness_.trace(vcd_);
+  }
+  void close() {
+    if (!open_) return;
+    open_ = false;
+#ifdef SPECULAR_HAS_RTL_TWIN
+    if constexpr (!std::is_same_v<Harness, PinHarness>) {
+      harness_.dut.close_vcd();
+      return;
+    }
+#endif
+    sc_core::sc_close_vcd_trace_file(vcd_);
+    vcd_ = nullptr;
+    stamp_initial_values(path_, opened_ps_);
+  }
+  bool is_open() const { return open_; }
+
+ private:
+  Harness& harness_;
+  std::string twin_suffix_;  ///< ".vcd" or ".fst" (RunSettings::twin_trace_suffix)
+  sc_core::sc_trace_file* vcd_ = nullptr;
+  bool open_ = false;
+  std::string path_;
+  std::uint64_t opened_ps_ = 0;
+};
+
 /// The bus-functional side of the pin model and the RTL twin: an SC_THREAD that
 /// resets the device, then feeds it batch after batch through the harness and stops
-/// the kernel.
+/// the kernel. It opens and closes a trace window (--trace-ops) and replays failing
+/// operations into their own traces (--trace-failures).
 template <class Harness>
 class PinDriver : public sc_core::sc_module {
  public:
   PinDriver(sc_core::sc_module_name name, Harness& harness, const OperandSource& source,
-            const ResultSink& sink, std::size_t chunk_size)
-      : sc_module(name), harness_(harness), source_(source), sink_(sink), chunk_size_(chunk_size) {
+            const ResultSink& sink, const RunSettings& settings)
+      : sc_module(name), harness_(harness), source_(source), sink_(sink), settings_(settings),
+        tracer_(harness, settings.twin_trace_suffix) {
     SPECULAR_HAS_PROCESS(PinDriver);
     SC_THREAD(drive);
+    SC_METHOD(close_window);
+    sensitive << close_event_;
+    dont_initialize();
+    if (window()) {
+      tracer_.prepare();
+      harness_.before_drive = [this](std::size_t i) {
+        if (base_ + i == settings_.trace_first) tracer_.open(settings_.vcd_base);
+      };
+      harness_.after_done = [this](std::size_t i) {
+        if (base_ + i + 1 == settings_.trace_first + settings_.trace_count)
+          close_event_.notify(harness_.clock_period() / 4);
+      };
+    } else if (settings_.replays) {
+      tracer_.prepare();
+    }
   }
 
   /// What went wrong inside the thread (a sink that cannot write, …), rethrown by
@@ -85,15 +186,27 @@ class PinDriver : public sc_core::sc_module {
   std::exception_ptr failure;
 
  private:
+  bool window() const { return !settings_.vcd_base.empty() && settings_.trace_window; }
+
+  void close_window() { tracer_.close(); }
+
   void drive() {
     try {
       harness_.reset();
       std::vector<Operands> chunk;
       std::vector<Result> results;
-      chunk.reserve(chunk_size_);
-      while (source_(chunk, chunk_size_)) {
+      chunk.reserve(settings_.chunk_size);
+      while (source_(chunk, settings_.chunk_size)) {
         harness_.run_batch(chunk, results);
         sink_(chunk, results, harness_.cycles());
+        if (settings_.replays) replay(chunk);
+        base_ += chunk.size();
+        // The operations before the next batch, for a replay of its first ones.
+        previous_.assign(chunk.size() >= 2 ? chunk.end() - 2 : chunk.begin(), chunk.end());
+      }
+      if (tracer_.is_open()) {  // the window reached past the last operation
+        wait(harness_.clock_period() / 4);
+        tracer_.close();
       }
     } catch (...) {
       failure = std::current_exception();
@@ -101,10 +214,60 @@ class PinDriver : public sc_core::sc_module {
     sc_core::sc_stop();
   }
 
+  /// Runs each requested operation k again, after k−2 (untraced: it leaves the
+  /// device's registers as they were), with k−1 and k traced, in the batches they had
+  /// (a batch boundary between them gives the same gap as in the run). From k ≤ 1 the
+  /// replay starts with a reset, as the run did.
+  void replay(const std::vector<Operands>& chunk) {
+    const auto requests = settings_.replays();
+    if (requests.empty()) return;
+    const auto saved_before = harness_.before_drive;
+    const auto saved_after = harness_.after_done;
+    harness_.after_done = nullptr;
+    std::vector<Result> results;
+    for (const auto& [k, file_base] : requests) {
+      if (k < base_ || k >= base_ + chunk.size()) continue;
+      const std::uint64_t from = k >= 2 ? k - 2 : 0;
+      if (from == 0) harness_.reset();
+      const std::uint64_t traced_from = k >= 1 ? k - 1 : 0;
+      std::vector<Operands> before, within;  // from the batch before this one, from this one
+      std::uint64_t before_first = 0;
+      for (std::uint64_t j = from; j <= k; ++j) {
+        if (j >= base_) {
+          within.push_back(chunk[j - base_]);
+        } else if (base_ - j <= previous_.size()) {
+          if (before.empty()) before_first = j;
+          before.push_back(previous_[previous_.size() - (base_ - j)]);
+        }
+      }
+      if (!before.empty()) run_traced(before, before_first, traced_from, file_base, results);
+      run_traced(within, from > base_ ? from : base_, traced_from, file_base, results);
+      wait(harness_.clock_period() / 4);
+      tracer_.close();
+    }
+    harness_.before_drive = saved_before;
+    harness_.after_done = saved_after;
+  }
+
+  /// One batch of a replay: operations [first, first + batch.size()), the trace
+  /// opened before `traced_from`'s pins are driven.
+  void run_traced(const std::vector<Operands>& batch, std::uint64_t first,
+                  std::uint64_t traced_from, const std::string& file_base,
+                  std::vector<Result>& results) {
+    harness_.before_drive = [&, first, traced_from](std::size_t i) {
+      if (first + i == traced_from) tracer_.open(file_base);
+    };
+    harness_.run_batch(batch, results);
+  }
+
   Harness& harness_;
   const OperandSource& source_;
   const ResultSink& sink_;
-  std::size_t chunk_size_;
+  const RunSettings& settings_;
+  Tracer<Harness> tracer_;
+  sc_core::sc_event close_event_;
+  std::uint64_t base_ = 0;           ///< index of the batch's first operation in the run
+  std::vector<Operands> previous_;   ///< the last operations of the batch before
 };
 
 /// Both pin-level models: the SystemC netlist (PinHarness) and the RTL twin
@@ -113,16 +276,17 @@ template <class Harness>
 void run_on_pins(const RunSettings& settings, const OperandSource& source,
                  const ResultSink& sink) {
   sc_core::sc_report_handler::set_handler(kernel_reports_to_stderr);
-  const bool tracing = !settings.vcd_base.empty();
+  const bool whole_run = !settings.vcd_base.empty() && !settings.trace_window;
+  const bool tracing = !settings.vcd_base.empty() || settings.replays;
   const sc_core::sc_time period(static_cast<double>(settings.clock_period_ps), sc_core::SC_PS);
   // Real-valued views cost a process activation per bus change, and GTKWave shows the
   // code buses as fixed point anyway (waveforms/specular.gtkw): only when asked for.
   Harness harness("tb", settings.config, period, tracing && settings.real_views);
-  PinDriver<Harness> driver("driver", harness, source, sink, settings.chunk_size);
+  PinDriver<Harness> driver("driver", harness, source, sink, settings);
 #ifdef SPECULAR_HAS_RTL_TWIN
   // The twin's waveform is Verilator's own, of the RTL's nets (waveforms/specular_rtl.gtkw).
   if constexpr (std::is_same_v<Harness, RtlHarness> || std::is_same_v<Harness, RtlSyncHarness>) {
-    if (tracing) harness.dut.open_vcd(settings.vcd_base + ".vcd");
+    if (whole_run) harness.dut.open_vcd(settings.vcd_base + settings.twin_trace_suffix);
     sc_core::sc_start();
     if (driver.failure) std::rethrow_exception(driver.failure);
     return;
@@ -130,7 +294,7 @@ void run_on_pins(const RunSettings& settings, const OperandSource& source,
 #endif
 
   sc_core::sc_trace_file* vcd = nullptr;
-  if (tracing) {
+  if (whole_run) {
     vcd = sc_core::sc_create_vcd_trace_file(settings.vcd_base.c_str());
     vcd->set_time_unit(1, sc_core::SC_PS);
     harness.trace(vcd);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "specular/core.h"
@@ -45,8 +46,21 @@ struct RunSettings {
   Config config{};
   std::uint64_t clock_period_ps = 10000;  ///< pin, rtl: period of pin 28; tlm: of its annotation
   std::string vcd_base;          ///< pin, rtl: VCD file name without ".vcd"; empty = no trace
+  /// rtl, rtl-sync: ".fst" has Verilator write FST directly (the twins verilated with
+  /// --trace-fst) into vcd_base + ".fst", windows and replays included; else ".vcd".
+  std::string twin_trace_suffix = ".vcd";
   bool real_views = false;       ///< with a trace: add the *_real views (RealView)
   std::size_t chunk_size = 4096;  ///< operations per batch (memory stays flat)
+  /// With vcd_base: trace only operations [trace_first, trace_first + trace_count)
+  /// (indices from 0 over the run), opened as the first one's pins are driven and
+  /// closed at the last one's 35↑; the instants between are those of a whole-run trace.
+  bool trace_window = false;
+  std::uint64_t trace_first = 0, trace_count = 0;
+  /// Pin-level models: after each batch's sink, which of its operations (indices over
+  /// the run) to run again with a trace, each with the two before it (the first of
+  /// them untraced, to set the device's state), into the file base it names
+  /// (specular_tb --trace-failures). Empty: nothing is replayed.
+  std::function<std::vector<std::pair<std::uint64_t, std::string>>()> replays;
 };
 
 /// Replaces `chunk` with up to `max` next operations; returns false when none are left.

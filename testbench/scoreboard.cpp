@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <cstdint>
 
 #include "run_models.h"
 
@@ -51,15 +52,20 @@ Comparison Scoreboard::compare(const Stimulus& stimulus, const Result& result,
   c.stimulus = stimulus;
   c.result = result;
   c.cycles = cycles;
-  const double cos_q = formats_.cos.to_real(result.reg1);
+  // code * 2^-frac, as FixedFormat::to_real computes it with ldexp (a power of two
+  // scales exactly), without ldexp's cost on the row path (issue 27).
+  const auto real = [](code_t code, const FixedFormat& f) {
+    return static_cast<double>(code) * (1.0 / static_cast<double>(std::uint64_t{1} << f.frac_bits));
+  };
+  const double cos_q = real(result.reg1, formats_.cos);
   const std::array<double, 3> rgb{double(stimulus.rgb[0]), double(stimulus.rgb[1]),
                                   double(stimulus.rgb[2])};
   c.ref = reference::evaluate(cos_q, stimulus.n, rgb, config_.normalisation, config_.saturation,
                               formats_.cos.frac_bits, config_.constants);
   c.k = reference::k(stimulus.n, config_.normalisation, config_.constants, formats_.cos.frac_bits);
-  c.approx = formats_.reg9.to_real(result.reg9_pass2);
-  c.norm = formats_.norm.to_real(result.norm39);
-  for (int ch = 0; ch < 3; ++ch) c.out[ch] = formats_.out.to_real(result.out[ch]);
+  c.approx = real(result.reg9_pass2, formats_.reg9);
+  c.norm = real(result.norm39, formats_.norm);
+  for (int ch = 0; ch < 3; ++ch) c.out[ch] = real(result.out[ch], formats_.out);
 
   // Register 1 must hold the code the stimulus asked for, or the reference above
   // would be computed on the wrong input.

@@ -5,6 +5,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "input.h"
 #include "specular/core.h"
@@ -57,6 +59,8 @@ struct Summary {
   /// Sum (mod 2^64) over the computations of a hash of (index, every result code,
   /// cycles): independent of order, so the shards' checksums add up to the whole run's.
   std::uint64_t checksum = 0;
+  std::vector<std::string> failure_traces;  ///< --trace-failures: the files written
+  std::size_t failure_traces_left_out = 0;  ///< failures past --trace-failures-max
   bool pass() const { return count > 0 && failures == 0; }
 };
 
@@ -70,6 +74,7 @@ class Scoreboard {
   /// Adds a comparison to the summary.
   void record(const Comparison& c);
   const Summary& summary() const { return summary_; }
+  Summary& summary() { return summary_; }
   const Formats& formats() const { return formats_; }
   const Config& config() const { return config_; }
 

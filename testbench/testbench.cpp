@@ -1,13 +1,24 @@
 #include "testbench.h"
 
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "input.h"
 #include "options.h"
 #include "output_file.h"
 #include "partial.h"
+#include "progress.h"
 #include "report.h"
 #include "run_models.h"
 #include "scoreboard.h"
@@ -75,6 +86,46 @@ Plan make_plan(const Options& o, const Formats& formats) {
   return plan;
 }
 
+bool ends_with(const std::string& text, const std::string& suffix) {
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+/// GTKWave's converter, found on PATH (empty: not installed).
+std::string find_vcd2fst() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  for (std::size_t at = 0; at <= dirs.size();) {
+    const std::size_t colon = std::min(dirs.find(':', at), dirs.size());
+    const std::filesystem::path candidate =
+        std::filesystem::path(dirs.substr(at, colon - at).empty() ? "." : dirs.substr(at, colon - at)) /
+        "vcd2fst";
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    at = colon + 1;
+  }
+  return "";
+}
+
+/// The trace as FST: GTKWave's vcd2fst converts the VCD the run wrote (docs/performance.md
+/// has its cost beside the VCD's), which is then removed.
+void convert_to_fst(const std::string& vcd2fst, const std::string& vcd, const std::string& fst) {
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+      ::dup2(null, STDOUT_FILENO);
+      ::dup2(null, STDERR_FILENO);
+    }
+    ::execl(vcd2fst.c_str(), "vcd2fst", vcd.c_str(), fst.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  int status = -1;
+  if (child > 0) ::waitpid(child, &status, 0);
+  std::remove(vcd.c_str());
+  if (child < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("vcd2fst could not convert the trace to '" + fst + "'");
+}
+
 std::string strip_vcd_suffix(const std::string& path) {
   const std::string suffix = ".vcd";
   if (path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0)
@@ -92,20 +143,59 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
     throw UsageError(e.what());
   }
   Plan plan = make_plan(o, formats);
+  if (o.trace_window && o.trace_first >= plan.source->size())
+    throw UsageError("--trace-ops: FIRST = " + std::to_string(o.trace_first) +
+                     " is outside the run's operations [0, " +
+                     std::to_string(plan.source->size() - 1) + "]");
+  if (!o.failure_dir.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(o.failure_dir, ec);
+    if (ec || !std::filesystem::is_directory(o.failure_dir))
+      throw UsageError("--trace-failures: cannot make the directory '" + o.failure_dir + "'" +
+                       (ec ? ": " + ec.message() : std::string()));
+  }
   std::optional<AtomicOutputStream> output_file;
   if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");
   std::optional<AtomicOutputStream> partial_file;  // issue 25: partial.h
   if (!o.partial_path.empty()) partial_file.emplace(o.partial_path, "--partial");
   std::optional<AtomicFile> vcd_file;
+  // A name ending in .fst asks for FST: the twins' Verilator writes it directly (their
+  // models verilated with --trace-fst); the pin model writes a VCD that GTKWave's
+  // vcd2fst converts when the run is over (docs/performance.md has both ways measured).
+  const bool fst = ends_with(o.vcd_path, ".fst");
+  const bool twin = o.model == Model::rtl || o.model == Model::rtl_sync;
+  const bool convert = fst && !twin;
+  const std::string vcd2fst = convert ? find_vcd2fst() : "";
+  if (convert && vcd2fst.empty())
+    throw UsageError("--vcd " + o.vcd_path + ": an FST trace needs GTKWave's vcd2fst (Debian "
+                     "package gtkwave: scripts/setup.sh --gtkwave); give a .vcd name instead");
   // SystemC's VCD writer appends ".vcd" to the name it is given.
-  if (!o.vcd_path.empty()) vcd_file.emplace(o.vcd_path, "--vcd", ".vcd");
+  if (!o.vcd_path.empty()) vcd_file.emplace(o.vcd_path, "--vcd", fst ? ".fst" : ".vcd");
 
   RunSettings settings;
   settings.model = o.model;
   settings.config = o.config;
   settings.clock_period_ps = o.clock_period_ps;
-  if (vcd_file) settings.vcd_base = strip_vcd_suffix(vcd_file->temp_path());
+  if (twin && fst) settings.twin_trace_suffix = ".fst";
+  if (vcd_file)  // beside the temporary file: its name less .vcd (.fst: plus .trace, or less .fst)
+    settings.vcd_base = convert ? vcd_file->temp_path() + ".trace"
+                        : fst   ? vcd_file->temp_path().substr(0, vcd_file->temp_path().size() - 4)
+                                : strip_vcd_suffix(vcd_file->temp_path());
+  // The VCD an FST is converted from goes, whatever happens to the run.
+  struct RemovedAtExit {
+    std::string path;
+    ~RemovedAtExit() {
+      if (!path.empty()) std::remove(path.c_str());
+    }
+  } fst_source{convert ? settings.vcd_base + ".vcd" : std::string()};
   settings.real_views = o.real_views;
+  settings.trace_window = o.trace_window;
+  settings.trace_first = o.trace_first;
+  settings.trace_count = o.trace_count;
+  // Failing operations of the batch just compared, to be replayed into their own files.
+  std::vector<std::pair<std::uint64_t, std::string>> replays;
+  if (!o.failure_dir.empty())
+    settings.replays = [&replays] { return std::exchange(replays, {}); };
 
   std::ostream& report_stream = output_file ? output_file->stream() : out;
   const std::unique_ptr<Report> report = make_report(o.format, report_stream, err);
@@ -122,6 +212,12 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   report->begin(description);
 
   Scoreboard scoreboard(o.config, latency_cycles(settings.model));
+  std::uint64_t index = 0;  // of the next result in the run
+  // Rows printed on the same terminal would land in the middle of the progress line.
+  const bool rows_on_terminal = !output_file && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1 &&
+                                (o.format != OutputFormat::text || description.text_rows);
+  Progress progress(std::cerr, plan.source->size(),
+                    &err == &std::cerr && !rows_on_terminal && progress_wanted(o.quiet));
   std::vector<Stimulus> stimuli;  // the chunk in flight, aligned with its operands
   const OperandSource source = [&](std::vector<Operands>& chunk, std::size_t max) {
     chunk.clear();
@@ -145,12 +241,27 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
       const Comparison c = scoreboard.compare(stimuli[i], result, measured);
       scoreboard.record(c);
       report->row(c);
+      if (!c.pass() && !o.failure_dir.empty()) {
+        Summary& summary = scoreboard.summary();
+        if (summary.failure_traces.size() < o.failure_max) {
+          const std::string base =
+              (std::filesystem::path(o.failure_dir) / ("op_" + std::to_string(index))).string();
+          replays.emplace_back(index, base);
+          summary.failure_traces.push_back(base + settings.twin_trace_suffix);
+        } else {
+          ++summary.failure_traces_left_out;
+        }
+      }
+      ++index;
     }
+    report->flush();
+    progress.update(index);
     if (!report_stream) throw UsageError("cannot write the report (disk full?)");
   };
 
   const auto started = std::chrono::steady_clock::now();
   run_operations(settings, source, sink);
+  progress.finish();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report->end(scoreboard.summary(), seconds);
@@ -167,6 +278,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
     partial_file->commit();
   }
   if (output_file) output_file->commit();
+  if (vcd_file && convert) convert_to_fst(vcd2fst, settings.vcd_base + ".vcd", vcd_file->temp_path());
   if (vcd_file) vcd_file->commit();
   return scoreboard.summary().pass() ? exit_pass : exit_out_of_tolerance;
 }

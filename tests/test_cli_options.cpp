@@ -209,3 +209,35 @@ TEST(CliOptions, WidthsOtherThanTheDefaults) {
             300u);
   expect_error({"--cos", "1", "--n", "1", "--rgb", "300,0,0"}, {"--rgb", "300"});
 }
+
+// Issue 27: trace windows, failure traces, --quiet. Each error names the option, the
+// value and what is allowed.
+TEST(CliOptions, TraceWindowsAndFailureTraces) {
+  const Options o = parse_options({"--random", "100", "--vcd", "w.vcd", "--trace-ops", "734511:2", "--quiet"});
+  EXPECT_TRUE(o.trace_window);
+  EXPECT_EQ(o.trace_first, 734511u);
+  EXPECT_EQ(o.trace_count, 2u);
+  EXPECT_TRUE(o.quiet);
+  const Options f = parse_options({"--sweep", "--model", "pin", "--trace-failures", "fails",
+                                   "--trace-failures-max", "3"});
+  EXPECT_EQ(f.failure_dir, "fails");
+  EXPECT_EQ(f.failure_max, 3u);
+  EXPECT_EQ(parse_options({"--sweep", "--trace-failures", "d"}).failure_max, 10u);
+  EXPECT_FALSE(parse_options({"--sweep"}).quiet);
+
+  expect_error({"--sweep", "--vcd", "w.vcd", "--trace-ops", "12"}, {"--trace-ops", "'12'", "FIRST:COUNT"});
+  expect_error({"--sweep", "--vcd", "w.vcd", "--trace-ops", "12:0"}, {"--trace-ops", "COUNT = 0", "[1, "});
+  expect_error({"--sweep", "--vcd", "w.vcd", "--trace-ops", "x:3"}, {"--trace-ops", "FIRST", "'x'"});
+  expect_error({"--sweep", "--vcd", "w.vcd", "--trace-ops", "-1:3"}, {"--trace-ops", "'-1'"});
+  expect_error({"--sweep", "--trace-ops", "1:3"}, {"--trace-ops needs --vcd"});
+  expect_error({"--sweep", "--model", "core", "--trace-failures", "d"},
+               {"--trace-failures", "pin, rtl or rtl-sync", "core"});
+  expect_error({"--sweep", "--trace-failures", "d", "--vcd", "w.vcd"}, {"--trace-failures", "--vcd"});
+  expect_error({"--sweep", "--trace-failures", ""}, {"--trace-failures", "empty"});
+  expect_error({"--sweep", "--trace-failures", "d", "--trace-failures-max", "0"},
+               {"--trace-failures-max", "0", "[1, 1000]"});
+  expect_error({"--sweep", "--trace-failures", "d", "--trace-failures-max", "1001"},
+               {"--trace-failures-max", "1001", "[1, 1000]"});
+  expect_error({"--sweep", "--trace-failures-max", "5"}, {"--trace-failures-max needs --trace-failures"});
+  expect_error({"--sweep", "--quiet=yes"}, {"--quiet", "no value", "'yes'"});
+}

@@ -267,6 +267,52 @@ TEST(TbReport, JsonParsesWithSettingsResultsAndSummary) {
   EXPECT_EQ(summary["cycles_max"].value, 2.5);
 }
 
+// JSON Lines (issue 27): each line a document of its own; the rows can be read after
+// a flush (a batch), before the summary exists; the same objects as the JSON's.
+TEST(TbReport, JsonLinesReadableBeforeTheEnd) {
+  std::ostringstream out, side;
+  auto report = make_report(OutputFormat::jsonl, out, side);
+  RunDescription run;
+  run.model = "core";
+  run.stimulus = "test \"quoted\"";
+  const auto comparisons = sample_comparisons(Config{});
+  Scoreboard scoreboard(Config{});
+  report->begin(run);
+  for (const Comparison& c : comparisons) {
+    scoreboard.record(c);
+    report->row(c);
+  }
+  report->flush();
+  const auto lines_of = [](const std::string& text) {
+    std::vector<Json> docs;
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) docs.push_back(JsonParser(line).parse());
+    return docs;
+  };
+  std::vector<Json> before;
+  ASSERT_NO_THROW(before = lines_of(out.str())) << out.str();
+  ASSERT_EQ(before.size(), 1 + comparisons.size());
+  EXPECT_EQ(before[0]["tool"].text, "specular_tb");
+  EXPECT_EQ(before[0]["settings"]["stimulus"].text, "test \"quoted\"");
+  EXPECT_EQ(before[1]["n"].value, 10);
+  report->end(scoreboard.summary(), 0);
+  std::vector<Json> after;
+  ASSERT_NO_THROW(after = lines_of(out.str())) << out.str();
+  ASSERT_EQ(after.size(), 2 + comparisons.size());
+  EXPECT_EQ(after.back()["summary"]["count"].value, 4);
+  // The rows are the JSON report's "results", field by field.
+  const Json doc = JsonParser(write_all(OutputFormat::json, Config{})).parse();
+  for (std::size_t i = 0; i < comparisons.size(); ++i)
+    for (const std::string& key : expected_fields) {
+      const Json& mine = after[1 + i][key];
+      const Json& theirs = doc["results"].items[i][key];
+      EXPECT_EQ(mine.kind, theirs.kind) << key;
+      EXPECT_EQ(mine.value, theirs.value) << key;
+      EXPECT_EQ(mine.text, theirs.text) << key;
+    }
+}
+
 TEST(TbReport, JsonWithNoResultsIsStillValid) {
   std::ostringstream out, side;
   auto report = make_report(OutputFormat::json, out, side);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "support/subprocess.h"
@@ -339,7 +340,8 @@ TEST_P(Integration, InterruptWorksUnboundThroughItsCallback) {
       SPECULAR_HAS_PROCESS(Top);
       if (kind == Kind::lt) target = std::make_unique<SpecularLtTarget>("ip");
       else if (kind == Kind::pin) target = std::make_unique<SpecularPinTarget>("ip");
-      else target = std::make_unique<SpecularRtlTarget>("ip");
+      else if (kind == Kind::rtl) target = std::make_unique<SpecularRtlTarget>("ip");
+      else target = std::make_unique<SpecularRtlSyncTarget>("ip");
       socket.bind(target->socket);  // done_irq: not bound
       target->on_done_irq([this](bool level) { edges.emplace_back(sc_core::sc_time_stamp(), level); });
       SC_THREAD(program);
@@ -385,8 +387,8 @@ TEST_P(Integration, InterruptWorksUnboundThroughItsCallback) {
   EXPECT_EQ(top->edges[1].first, top->acknowledged);
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTarget, Integration, testing::Values(Kind::lt, Kind::pin, Kind::rtl),
-                         kind_name);
+INSTANTIATE_TEST_SUITE_P(EveryTarget, Integration,
+                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync), kind_name);
 
 // SpecularDriver names the response that failed, and STATUS's cause.
 TEST(IntegrationDriver, TransportErrorNamesTheFailedResponse) {
@@ -418,31 +420,56 @@ TEST(IntegrationDriver, TransportErrorNamesTheFailedResponse) {
 }
 
 // The example SoC platform (examples/soc_platform) with each target: 50 operations
-// through a generic bus under a quantum keeper, every result equal to Core's.
-class SocPlatform : public testing::TestWithParam<Kind> {};
+// through a generic bus under a quantum keeper, every result equal to Core's; with
+// --strict, under a CPU that aborts if b_transport ever returns a delay smaller than
+// the local time it passed in (riscv-vp's assert).
+class SocPlatform : public testing::TestWithParam<std::tuple<Kind, bool>> {};
+
+std::string platform_target(Kind kind) { return kind == Kind::rtl_sync ? "rtl-sync" : to_string(kind); }
 
 TEST_P(SocPlatform, RunsFiftyOperationsEqualToCore) {
+  const auto [kind, strict] = GetParam();
   const std::string exe = std::string(SPECULAR_BINARY_DIR) + "/examples/soc_platform/soc_platform";
   const auto dir = testing_support::fresh_directory("run");
   const auto outcome = testing_support::run_command(
-      "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe + "' --target " + to_string(GetParam()), dir);
+      "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe + "' --target " + platform_target(kind) +
+          (strict ? " --strict" : ""),
+      dir);
   EXPECT_EQ(outcome.status, 0) << outcome.out << outcome.err;
-  EXPECT_NE(outcome.out.find(std::string("target ") + to_string(GetParam()) +
+  EXPECT_NE(outcome.out.find("target " + platform_target(kind) + (strict ? " (strict initiator)" : "") +
                              ": 50/50 operations equal to Core, 50 interrupts"),
             std::string::npos)
       << outcome.out;
   EXPECT_EQ(outcome.err.find("access-refused"), std::string::npos) << outcome.err;
+  EXPECT_EQ(outcome.err.find("the delay shrank"), std::string::npos) << outcome.err;
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryTarget, SocPlatform, testing::Values(Kind::lt, Kind::pin, Kind::rtl),
-                         kind_name);
+INSTANTIATE_TEST_SUITE_P(
+    EveryTarget, SocPlatform,
+    testing::Combine(testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync), testing::Bool()),
+    [](const testing::TestParamInfo<std::tuple<Kind, bool>>& info) {
+      return std::string(to_string(std::get<0>(info.param))) +
+             (std::get<1>(info.param) ? "_strict" : "");
+    });
+
+// The RAM holds every operation's results up to --operations' limit (64 KiB held 5461).
+TEST(SocPlatformCommandLine, RunsMoreOperationsThanTheFirstRamHeld) {
+  const std::string exe = std::string(SPECULAR_BINARY_DIR) + "/examples/soc_platform/soc_platform";
+  const auto dir = testing_support::fresh_directory("run");
+  const auto outcome = testing_support::run_command(
+      "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe + "' --target lt --strict --operations 6000", dir);
+  EXPECT_EQ(outcome.status, 0) << outcome.out << outcome.err;
+  EXPECT_NE(outcome.out.find("6000/6000 operations equal to Core, 6000 interrupts"), std::string::npos)
+      << outcome.out;
+}
 
 TEST(SocPlatformCommandLine, BadArgumentsAreNamedWithTheAllowedValues) {
   const std::string exe = std::string(SPECULAR_BINARY_DIR) + "/examples/soc_platform/soc_platform";
   const auto dir = testing_support::fresh_directory("run");
   auto outcome = testing_support::run_command("'" + exe + "' --target fpga", dir);
   EXPECT_EQ(outcome.status, 2);
-  EXPECT_NE(outcome.err.find("unknown target 'fpga' (allowed: lt, pin, rtl)"), std::string::npos)
+  EXPECT_NE(outcome.err.find("unknown target 'fpga' (allowed: lt, pin, rtl, rtl-sync)"),
+            std::string::npos)
       << outcome.err;
   outcome = testing_support::run_command("'" + exe + "' --operations 0", dir);
   EXPECT_EQ(outcome.status, 2);

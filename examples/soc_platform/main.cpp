@@ -1,10 +1,13 @@
 // soc_platform: the specular IP in a small SoC (platform.h) — a processor-like
 // initiator with a quantum keeper, a generic bus, a RAM — run with the chosen target.
 //
-//   soc_platform [--target lt|pin|rtl] [--operations N]
+//   soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]
 //
+// --strict: the CPU asserts, as riscv-vp's memory interface does, that b_transport
+// never returns a delay smaller than the local time it passed in (platform.h).
 // Prints one line and exits 0 when every result equals Core's and every operation
-// raised one interrupt; 1 otherwise; 2 for a bad command line.
+// raised one interrupt; 1 otherwise; 2 for a bad command line; a strict assert that
+// fails aborts.
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -15,7 +18,9 @@ namespace {
 
 int usage(const std::string& problem) {
   std::cerr << "soc_platform: " << problem << "\n"
-            << "usage: soc_platform [--target lt|pin|rtl] [--operations N]  (N in 1..100000)\n";
+            << "usage: soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]"
+               "  (N in 1.."
+            << soc::max_operations << ")\n";
   return 2;
 }
 
@@ -25,6 +30,7 @@ int sc_main(int argc, char* argv[]) {
   soc::Target target = soc::Target::lt;
   std::string target_name = "lt";
   long operations = 50;
+  bool strict = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if ((arg == "--target" || arg == "--operations") && i + 1 == argc)
@@ -34,28 +40,34 @@ int sc_main(int argc, char* argv[]) {
       if (target_name == "lt") target = soc::Target::lt;
       else if (target_name == "pin") target = soc::Target::pin;
       else if (target_name == "rtl") target = soc::Target::rtl;
-      else return usage("unknown target '" + target_name + "' (allowed: lt, pin, rtl)");
+      else if (target_name == "rtl-sync") target = soc::Target::rtl_sync;
+      else return usage("unknown target '" + target_name + "' (allowed: lt, pin, rtl, rtl-sync)");
     } else if (arg == "--operations") {
       const std::string value = argv[++i];
       char* end = nullptr;
       operations = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || operations < 1 || operations > 100000)
-        return usage("--operations '" + value + "' is not a whole number in 1..100000");
+      if (value.empty() || *end != '\0' || operations < 1 ||
+          operations > static_cast<long>(soc::max_operations))
+        return usage("--operations '" + value + "' is not a whole number in 1.." +
+                     std::to_string(soc::max_operations));
+    } else if (arg == "--strict") {
+      strict = true;
     } else {
       return usage("unknown argument '" + arg + "'");
     }
   }
   if (!soc::Platform::has(target))
-    return usage("this build has no rtl target (the package was installed or found without "
-                 "its rtl component)");
+    return usage("this build has no " + target_name +
+                 " target (the package was installed or found without its rtl component)");
 
-  soc::Platform platform("soc", target, static_cast<std::size_t>(operations));
+  soc::Platform platform("soc", target, static_cast<std::size_t>(operations), strict);
   sc_core::sc_start();
 
   const soc::Cpu& cpu = platform.cpu;
   const bool pass = cpu.failure.empty() && cpu.operations_done == static_cast<std::size_t>(operations) &&
                     cpu.matches == cpu.operations_done && platform.interrupts == cpu.operations_done;
-  std::cout << "soc_platform: target " << target_name << ": " << cpu.matches << "/" << operations
+  std::cout << "soc_platform: target " << target_name << (strict ? " (strict initiator)" : "")
+            << ": " << cpu.matches << "/" << operations
             << " operations equal to Core, " << platform.interrupts << " interrupts, "
             << sc_core::sc_time_stamp() << " simulated"
             << (cpu.failure.empty() ? "" : ", failure: " + cpu.failure) << ": "

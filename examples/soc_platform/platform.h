@@ -10,10 +10,18 @@
 // Its loads and stores are what a 64-bit core issues: 1, 2, 4 and 8 bytes, streaming
 // width 0, no byte enables. Every other operation goes through SpecularDriver's
 // burst path instead. Each result is checked against Core, computed here.
+//
+// Strict (--strict): the CPU's memory interface is riscv-vp's: it passes its quantum
+// keeper's local time as `delay`, asserts after b_transport that the delay did not
+// shrink, and sets the keeper to it; the assert is on in every build type (it aborts,
+// as assert() does). Every access goes through it, the bursts included. The pin target
+// is then built with PinDelay::keep, as such a platform needs (docs/integration.md §6).
 #pragma once
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
+#include <iostream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -26,16 +34,21 @@
 #include "bus.h"
 #include "specular/specular.h"
 #ifdef SOC_PLATFORM_HAS_RTL
+#include "specular/twin/rtl_sync_target.h"
 #include "specular/twin/rtl_target.h"
 #endif
 
 namespace soc {
 
 constexpr std::uint64_t ram_base = 0x00000000;
-constexpr std::uint64_t ram_bytes = 0x10000;
+constexpr std::size_t max_operations = 100000;  ///< soc_platform --operations' limit
+/// 12 bytes of results per operation: room for max_operations (it was 64 KiB, which
+/// made a run of more than 5461 operations fail with an address error).
+constexpr std::uint64_t ram_bytes = 0x200000;
+static_assert(12 * max_operations <= ram_bytes, "the RAM holds every operation's results");
 constexpr std::uint64_t ip_base = 0x10000000;
 
-enum class Target { lt, pin, rtl };
+enum class Target { lt, pin, rtl, rtl_sync };
 
 /// A small processor-like initiator: loads and stores over its bus socket, a wait
 /// for interrupt on `irq`, and the program in program().
@@ -44,8 +57,8 @@ class Cpu : public sc_core::sc_module {
   tlm_utils::simple_initiator_socket<Cpu, 32> bus{"bus"};
   sc_core::sc_in<bool> irq{"irq"};
 
-  Cpu(sc_core::sc_module_name name, std::size_t operations)
-      : sc_module(name), operations_(operations), driver_(bus, ip_base, keeper_) {
+  Cpu(sc_core::sc_module_name name, std::size_t operations, bool strict)
+      : sc_module(name), operations_(operations), strict_(strict), driver_(bus, ip_base, keeper_) {
     SPECULAR_HAS_PROCESS(Cpu);
     // A 1 µs quantum, as riscv-vp and the Accellera LT examples use.
     tlm_utils::tlm_quantumkeeper::set_global_quantum(sc_core::sc_time(1, sc_core::SC_US));
@@ -72,6 +85,14 @@ class Cpu : public sc_core::sc_module {
     tx_.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     sc_core::sc_time local = keeper_.get_local_time();
     bus->b_transport(tx_, local);
+    if (strict_ && local < keeper_.get_local_time()) {
+      // riscv-vp: assert(delay >= quantum_keeper.get_local_time()), kept on in Release.
+      std::cerr << "soc_platform: strict initiator: the delay shrank: " << keeper_.get_local_time()
+                << " passed to b_transport, " << local << " returned ("
+                << (command == tlm::TLM_READ_COMMAND ? "load" : "store") << " of " << length
+                << " bytes at 0x" << std::hex << address << std::dec << ")" << std::endl;
+      std::abort();
+    }
     keeper_.set(local);
     if (keeper_.need_sync()) keeper_.sync();
     if (!tx_.is_response_ok() && failure.empty()) {
@@ -144,6 +165,13 @@ class Cpu : public sc_core::sc_module {
         out[0] = static_cast<std::uint32_t>(rg);
         out[1] = static_cast<std::uint32_t>(rg >> 32);
         out[2] = load<std::uint32_t>(reg(Reg::out_b));
+      } else if (strict_) {  // the same bursts, through the strict memory interface
+        const auto word = [](specular::code_t code) { return static_cast<std::uint32_t>(code); };
+        std::uint32_t operands[6] = {word(in.cos),    word(in.n),      word(in.rgb[0]),
+                                     word(in.rgb[1]), word(in.rgb[2]), specular::control_bits::start};
+        access(tlm::TLM_WRITE_COMMAND, reg(Reg::operands), operands, sizeof operands);
+        wait_for_interrupt();
+        access(tlm::TLM_READ_COMMAND, reg(Reg::results), out, sizeof out);
       } else {  // the driver's burst path (OPERANDS, RESULTS)
         try {
           const auto result = driver_.compute_burst(in);
@@ -173,6 +201,7 @@ class Cpu : public sc_core::sc_module {
   }
 
   std::size_t operations_;
+  bool strict_;
   std::uint32_t seed_ = 1;
   tlm_utils::tlm_quantumkeeper keeper_;
   specular::SpecularDriver driver_;
@@ -182,12 +211,13 @@ class Cpu : public sc_core::sc_module {
 /// The whole platform; `target` picks the IP's implementation.
 class Platform : public sc_core::sc_module {
  public:
-  Platform(sc_core::sc_module_name name, Target target, std::size_t operations)
+  Platform(sc_core::sc_module_name name, Target target, std::size_t operations,
+           bool strict = false)
       : sc_module(name),
-        cpu("cpu", operations),
+        cpu("cpu", operations, strict),
         bus("bus", {{ram_base, ram_bytes, "to_ram"}, {ip_base, specular::map_size, "to_ip"}}),
         ram("ram", ram_bytes),
-        ip(make_ip(target)) {
+        ip(make_ip(target, strict)) {
     cpu.bus.bind(bus.socket);
     bus.output(0).bind(ram.socket);
     bus.output(1).bind(ip->socket);
@@ -202,7 +232,7 @@ class Platform : public sc_core::sc_module {
     (void)target;
     return true;
 #else
-    return target != Target::rtl;
+    return target != Target::rtl && target != Target::rtl_sync;
 #endif
   }
 
@@ -214,18 +244,23 @@ class Platform : public sc_core::sc_module {
   std::size_t interrupts = 0;  ///< rising edges of done_irq, by callback
 
  private:
-  static std::unique_ptr<specular::SpecularTarget> make_ip(Target target) {
+  static std::unique_ptr<specular::SpecularTarget> make_ip(Target target, bool strict) {
     switch (target) {
       case Target::lt: return std::make_unique<specular::SpecularLtTarget>("ip");
-      case Target::pin: return std::make_unique<specular::SpecularPinTarget>("ip");
-      case Target::rtl:
+      case Target::pin:
+        // A strict initiator refuses a delay that shrinks: the pin target keeps it.
+        return std::make_unique<specular::SpecularPinTarget>(
+            "ip", specular::Config{}, sc_core::sc_time(10, sc_core::SC_NS), false,
+            strict ? specular::PinDelay::keep : specular::PinDelay::consume);
 #ifdef SOC_PLATFORM_HAS_RTL
-        return std::make_unique<specular::SpecularRtlTarget>("ip");
+      case Target::rtl: return std::make_unique<specular::SpecularRtlTarget>("ip");
+      case Target::rtl_sync: return std::make_unique<specular::SpecularRtlSyncTarget>("ip");
 #else
-        break;
+      case Target::rtl:
+      case Target::rtl_sync: break;
 #endif
     }
-    throw std::invalid_argument("this build of soc_platform has no rtl target");
+    throw std::invalid_argument("this build of soc_platform has no rtl or rtl-sync target");
   }
 };
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "parse_values.h"
+#include "progress.h"
 #include "run_models.h"
 #include "scoreboard.h"
 #include "specular/pin_harness.h"
@@ -47,6 +49,10 @@ SoakOptions parse_soak_options(const std::vector<std::string>& args) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& option = args[i];
     if (option == "--help" || option == "-h") throw std::invalid_argument("");
+    if (option == "--quiet") {
+      o.quiet = true;
+      continue;
+    }
     if (i + 1 >= args.size())
       throw std::invalid_argument("option " + option + " needs a value (see --help)");
     const std::string& value = args[++i];
@@ -79,7 +85,7 @@ std::string soak_help() {
   return R"(specular_soak: constrained-random soak of the specular device models.
 
 Usage: specular_soak [--core N] [--pin N] [--tlm N] [--tlm-pin N] [--seed S]
-                     [--constants C] [--inject-fault K]
+                     [--constants C] [--inject-fault K] [--quiet]
 
   --core N       operations through the bit-accurate core, cycling through every
                  normalisation and saturation policy (default 10000000)
@@ -93,6 +99,8 @@ Usage: specular_soak [--core N] [--pin N] [--tlm N] [--tlm-pin N] [--seed S]
                  ROM 38's scale in every stage, the reference's too (default patent);
                  the core stage skips the policies the device refuses under them
   --inject-fault K   corrupt operation K of every stage (self-check of the scoreboard)
+  --quiet        no progress line (drawn on standard error only when it is a
+                 terminal: operations done, total, rate, time left)
 
 Every result is compared with the double reference (tolerances of reference.h);
 pin and TLM results must equal the core's bit for bit. Each SystemC stage runs in a
@@ -191,11 +199,13 @@ bool same_bits(const Result& a, const Result& b) {
          a.rom38_k == b.rom38_k && a.norm39 == b.norm39 && a.out == b.out;
 }
 
-/// Counts failures for one stage, and samples VmRSS early and late.
+/// Counts failures for one stage, samples VmRSS early and late, and draws specular_tb's
+/// progress line (progress.h) while the stage runs: only on a terminal, not with --quiet.
 class Tally {
  public:
-  Tally(std::string stage, std::size_t planned, std::size_t inject_fault)
-      : planned_(planned), inject_fault_(inject_fault), start_(std::chrono::steady_clock::now()) {
+  Tally(std::string stage, std::size_t planned, std::size_t inject_fault, bool quiet)
+      : planned_(planned), inject_fault_(inject_fault), start_(std::chrono::steady_clock::now()),
+        progress_(std::cerr, planned, tb::progress_wanted(quiet), "operations", stage) {
     figures_.stage = std::move(stage);
   }
 
@@ -213,9 +223,11 @@ class Tally {
     if (!bits_ok) ++figures_.bit_mismatches;
     if (!reference_ok || !bits_ok) ++figures_.mismatches;
     if (figures_.rss_early_kib == 0 && figures_.ops >= planned_ / 10) figures_.rss_early_kib = resident_kib();
+    if (figures_.ops % 1024 == 0) progress_.update(figures_.ops);  // a clock read per 1024
   }
 
   StageFigures finish() {
+    progress_.finish();
     figures_.seconds = seconds_since(start_);
     figures_.rss_late_kib = resident_kib();
     if (figures_.rss_early_kib == 0) figures_.rss_early_kib = figures_.rss_late_kib;
@@ -226,6 +238,7 @@ class Tally {
   std::size_t planned_;
   std::size_t inject_fault_;
   std::chrono::steady_clock::time_point start_;
+  tb::Progress progress_;
   StageFigures figures_;
 };
 
@@ -259,7 +272,7 @@ StageFigures run_core_stage(const SoakOptions& options, std::vector<std::string>
       }
     }
   Stimuli stimuli(Formats(soak_config(options).widths), options.seed);
-  Tally tally("core", options.core_ops, options.inject_fault);
+  Tally tally("core", options.core_ops, options.inject_fault, options.quiet);
   std::vector<Stimulus> chunk;
   std::size_t policy = 0;
   for (std::size_t done = 0; done < options.core_ops; done += chunk.size()) {
@@ -282,7 +295,7 @@ class PinSoak : public sc_core::sc_module {
       : sc_module(name),
         harness("harness", soak_config(options), sc_core::sc_time(10, sc_core::SC_NS)),
         options_(options),
-        tally_("pin", options.pin_ops, options.inject_fault),
+        tally_("pin", options.pin_ops, options.inject_fault, options.quiet),
         scoreboard_(soak_config(options)),
         core_(soak_config(options)) {
     SPECULAR_HAS_PROCESS(PinSoak);
@@ -340,7 +353,7 @@ class TlmSoak : public sc_core::sc_module {
         options_(options),
         pin_target_(pin_target),
         count_(pin_target ? options.tlm_pin_ops : options.tlm_ops),
-        tally_(pin_target ? "tlm-pin" : "tlm", count_, options.inject_fault),
+        tally_(pin_target ? "tlm-pin" : "tlm", count_, options.inject_fault, options.quiet),
         scoreboard_(soak_config(options)),
         core_(soak_config(options)) {
     SPECULAR_HAS_PROCESS(TlmSoak);

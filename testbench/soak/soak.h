@@ -27,6 +27,7 @@ struct SoakOptions {
   /// Corrupts the result of operation K (1-based) of every stage, to show that the
   /// scoreboard catches it (0: none).
   std::size_t inject_fault = 0;
+  bool quiet = false;  ///< no progress line (drawn on standard error only on a terminal)
 };
 
 /// Parses argv[1..]; throws std::invalid_argument naming the option and the range.

@@ -51,7 +51,7 @@ std::vector<EnergyRow> run_energy_study(const StudyOptions& options) {
   const std::vector<unsigned> ns = options.n_values();
   std::vector<EnergyRow> rows(ns.size() * policies.size());
   parallel_for("energy integrals (equation 6, every policy)", ns.size(), options.workers,
-               [&](std::size_t item, unsigned) {
+               options.quiet, [&](std::size_t item, unsigned) {
     const unsigned n = ns[item];
     const LobeIntegrals lobes = lobe_integrals(n, bits);
     for (std::size_t p = 0; p < policies.size(); ++p) {
@@ -91,7 +91,7 @@ std::vector<DeviceEnergyRow> run_device_energy_study(const StudyOptions& options
   const std::vector<unsigned> ns = options.n_values();
   std::vector<DeviceEnergyRow> rows(ns.size() * constants.size());
   parallel_for("device-energy integrals (equation 6, every constants policy)", ns.size(),
-               options.workers, [&](std::size_t item, unsigned) {
+               options.workers, options.quiet, [&](std::size_t item, unsigned) {
     for (std::size_t c = 0; c < constants.size(); ++c) {
       DeviceEnergyRow& row = rows[item * constants.size() + c];
       row.n = ns[item];

@@ -159,7 +159,7 @@ ErrorSummary run_error_study(const StudyOptions& options) {
   const std::vector<unsigned> curve_ns = StudyOptions::curve_n_values();
 
   parallel_for("error study (all methods, every cos code)", ns.size(), options.workers,
-               [&](std::size_t item, unsigned) {
+               options.quiet, [&](std::size_t item, unsigned) {
     const unsigned n = ns[item];
     const LobeTables t = evaluator.tables(n);
     PerN& row = per_n[item];

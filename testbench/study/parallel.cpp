@@ -5,14 +5,17 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <iostream>
 #include <mutex>
 #include <thread>
 #include <vector>
 
+#include "progress.h"
+
 namespace specular {
 namespace study {
 
-double parallel_for(const std::string& stage, std::size_t items, unsigned workers,
+double parallel_for(const std::string& stage, std::size_t items, unsigned workers, bool quiet,
                     const std::function<void(std::size_t, unsigned)>& work) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
@@ -25,7 +28,8 @@ double parallel_for(const std::string& stage, std::size_t items, unsigned worker
   std::mutex report;  // guards `error` and the progress lines
   std::exception_ptr error;
   std::size_t done = 0;
-  int reported_tenths = 0;
+  // specular_tb's progress line (progress.h): only on a terminal, not with --quiet.
+  tb::Progress progress(std::cerr, items, tb::progress_wanted(quiet), "items", stage);
 
   const auto worker = [&](unsigned id) {
     for (;;) {
@@ -41,27 +45,24 @@ double parallel_for(const std::string& stage, std::size_t items, unsigned worker
         return;
       }
       std::lock_guard<std::mutex> lock(report);
-      ++done;
-      const int tenths = static_cast<int>(10 * done / items);
-      if (tenths > reported_tenths && done < items) {
-        reported_tenths = tenths;
-        std::fprintf(stderr, "  %s: %d%% (%zu/%zu, %.1f s)\n", stage.c_str(),
-                     static_cast<int>(100 * done / items), done, items, seconds());
-      }
+      progress.update(++done);
     }
   };
 
-  std::fprintf(stderr, "%s: %zu items on %u worker%s\n", stage.c_str(), items, workers,
-               workers == 1 ? "" : "s");
+  std::cerr << stage << ": " << items << " items on " << workers << " worker"
+            << (workers == 1 ? "" : "s") << std::endl;
   std::vector<std::thread> threads;
   const unsigned count = std::max(1u, workers);
   for (unsigned id = 1; id < count; ++id) threads.emplace_back(worker, id);
   worker(0);
   for (std::thread& t : threads) t.join();
+  progress.finish();
   if (error) std::rethrow_exception(error);
 
   const double elapsed = seconds();
-  std::fprintf(stderr, "  %s: done in %.1f s\n", stage.c_str(), elapsed);
+  char line[64];
+  std::snprintf(line, sizeof line, "%.1f s", elapsed);
+  std::cerr << "  " << stage << ": done in " << line << std::endl;
   return elapsed;
 }
 

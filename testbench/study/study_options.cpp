@@ -19,12 +19,14 @@ std::vector<unsigned> StudyOptions::curve_n_values() { return {1, 2, 5, 10, 50, 
 std::vector<unsigned> StudyOptions::sphere_n_values() { return {1, 10, 100, 1000}; }
 
 std::string study_usage() {
-  return "usage: specular_study [--out DIR] [--quick] [--workers N] [--help]\n"
+  return "usage: specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--help]\n"
          "  Measures the device's approximation of cos^n, its energy integrals and its\n"
          "  fixed-point widths, and writes CSV files for scripts/plot_study.py.\n"
          "  --out DIR    directory for the CSV files (created; default study-output)\n"
          "  --quick      n = 1, 10, 100, 1000 only and coarse grids (a few seconds)\n"
-         "  --workers N  worker threads, 1 … 64 (default 2)\n";
+         "  --workers N  worker threads, 1 … 64 (default 2)\n"
+         "  --quiet      no progress line (drawn on standard error only when it is a\n"
+         "               terminal: items done, total, rate, time left)\n";
 }
 
 StudyOptions parse_study_options(int argc, const char* const* argv) {
@@ -38,6 +40,8 @@ StudyOptions parse_study_options(int argc, const char* const* argv) {
     if (arg == "--out") {
       options.out_dir = value();
       if (options.out_dir.empty()) throw UsageError("--out needs a non-empty directory name");
+    } else if (arg == "--quiet") {
+      options.quiet = true;
     } else if (arg == "--quick") {
       options.quick = true;
     } else if (arg == "--workers") {

@@ -17,6 +17,7 @@ struct StudyOptions {
   std::string out_dir = "study-output";  ///< where the CSV files go
   bool quick = false;                    ///< a few n and coarse grids: seconds, for tests
   unsigned workers = 2;                  ///< worker threads
+  bool quiet = false;                    ///< no progress line (it is drawn only on a terminal)
   bool help = false;
 
   /// Every n the per-n stages visit: 1 … 1000, or a handful in quick mode.

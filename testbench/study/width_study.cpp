@@ -62,7 +62,8 @@ std::vector<WidthCase> width_cases(bool quick) {
 }
 
 std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
-                                        const std::vector<unsigned>& ns, unsigned workers) {
+                                        const std::vector<unsigned>& ns, unsigned workers,
+                                        bool quiet) {
   // The grid repeats some cases of the one-at-a-time sweeps: measure each distinct
   // device once (unique_of[i] = its index in `cores`).
   std::vector<std::unique_ptr<Core>> cores;
@@ -88,7 +89,7 @@ std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
   std::vector<std::vector<Accumulator>> acc(std::max(1u, workers),
                                             std::vector<Accumulator>(cores.size()));
   parallel_for("width exploration (" + std::to_string(cores.size()) + " devices)", ns.size(),
-               workers, [&](std::size_t item, unsigned worker) {
+               workers, quiet, [&](std::size_t item, unsigned worker) {
     const unsigned n = ns[item];
     std::vector<double> formula(static_cast<std::size_t>(one) + 1), exact(formula.size());
     for (code_t c = 0; c <= one; ++c) {
@@ -141,7 +142,8 @@ std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
 
 std::vector<WidthResult> run_width_study(const StudyOptions& options) {
   const std::vector<WidthResult> results =
-      explore_widths(width_cases(options.quick), options.n_values(), options.workers);
+      explore_widths(width_cases(options.quick), options.n_values(), options.workers,
+                     options.quiet);
   const Widths d;
   {
     CsvWriter csv(options.out_dir + "/widths.csv",

@@ -34,9 +34,11 @@ struct WidthResult {
   double max_norm_err = 0;        ///< |K·A (multiplier 39) − K·A_formula| / max(1, K), patent K
 };
 
-/// Measures every case over every n in `ns`; `workers` threads.
+/// Measures every case over every n in `ns`; `workers` threads; `quiet`: no progress
+/// line (parallel_for).
 std::vector<WidthResult> explore_widths(const std::vector<WidthCase>& cases,
-                                        const std::vector<unsigned>& ns, unsigned workers);
+                                        const std::vector<unsigned>& ns, unsigned workers,
+                                        bool quiet = false);
 
 /// Writes widths.csv (one row per case) and widths_near_one.csv (n = 1000, the top of
 /// the cos range, for ROM 5 address widths around cos_frac_bits − 1) into

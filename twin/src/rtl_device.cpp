@@ -2,6 +2,8 @@
 
 #include "Vspecular_device_cc.h"
 #include "Vspecular_device_cc___024root.h"
+#include "Vspecular_device_cc_fst.h"  // the same verilated with --trace-fst (issue 27)
+#include "Vspecular_device_cc_fst___024root.h"
 
 #include "specular/twin/rtl_device.h"
 
@@ -27,7 +29,8 @@ struct Fig2Nets {
 RtlDevice::RtlDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
     : RtlDeviceBase(name, config, real_views,
                     {"RtlDevice", "RTL twin", "waveforms/specular_rtl.gtkw",
-                     &RtlModel<Vspecular_device_cc, Fig2Nets>::make}) {
+                     &RtlModel<Vspecular_device_cc, Fig2Nets>::make,
+                     &RtlModel<Vspecular_device_cc_fst, Fig2Nets, VerilatedFstC>::make}) {
   bind(protocol_checker, q41, q42, nand45);
   // NAND 45 starts high, as the netlist's does, until the first evaluation.
   nand45.write(true);

@@ -20,6 +20,8 @@ RtlDeviceBase::RtlDeviceBase(sc_core::sc_module_name name, const Config& config,
         "the " + twin + " has no real-valued views: its VCD holds the RTL's own nets as codes "
         "(" + variant.gtkw + " shows them as real numbers)");
   rtl_ = variant.make_model(config);
+  make_model_ = variant.make_model;
+  make_fst_model_ = variant.make_fst_model;
   arith::Rom38Table check(formats_, config);  // a device the core refuses, the twin refuses too
 
   // Done (35) starts high (idle), as the netlist's does, until the first evaluation.
@@ -30,11 +32,11 @@ RtlDeviceBase::~RtlDeviceBase() = default;
 
 void RtlDeviceBase::evaluate() {
   Verilated& v = *rtl_;
-  if (v.vcd) {
+  if (v.writing()) {
     // The waveform holds each instant's settled values: the state left by the last
     // evaluation at an earlier instant is dumped at that instant, before it changes.
     const std::uint64_t now_ps = sc_core::sc_time_stamp().value();
-    if (v.evaluated && now_ps > v.last_eval_ps) v.vcd->dump(v.last_eval_ps);
+    if (v.evaluated && now_ps > v.last_eval_ps) v.dump(v.last_eval_ps);
     v.last_eval_ps = now_ps;
     v.evaluated = true;
   }
@@ -66,31 +68,62 @@ void RtlDeviceBase::before_end_of_elaboration() {
   SC_METHOD(evaluate);
   sensitive << pin19_h << pin20_a << pin27_start << pin28_clk << pin29_reset_n
             << pin30_load_n << pin31_load_r << pin32_load_g << pin33_load_b << pin34_carry;
-  if (!vcd_path_.empty()) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
+  if (traceable_) sensitive << pin17_cos << pin18_n << pin21_r << pin22_g << pin23_b;
 }
 
-void RtlDeviceBase::open_vcd(const std::string& path) {
+void RtlDeviceBase::allow_tracing(bool fst) {
   if (sc_core::sc_get_status() != sc_core::SC_ELABORATION)
     throw std::logic_error(std::string(class_name_) +
-                           "::open_vcd must be called before the simulation starts");
-  vcd_path_ = path;
+                           "::allow_tracing must be called before the simulation starts");
+  // ---- FST (issue 27): the model verilated with --trace-fst replaces the VCD one
+  // before it has run (its policies tied off again; the pins' channels are taken at
+  // end_of_elaboration, after this).
+  if (fst != rtl_->fst()) rtl_ = fst ? make_fst_model_(config_) : make_model_(config_);
+  traceable_ = true;
   rtl_->context.traceEverOn(true);
 }
 
-void RtlDeviceBase::start_of_simulation() {
-  if (vcd_path_.empty()) return;
-  rtl_->vcd = std::make_unique<VerilatedVcdC>();
-  rtl_->trace(*rtl_->vcd);
-  // SystemC's time resolution (1 ps by default) is the waveform's time unit.
-  rtl_->vcd->set_time_resolution("1ps");
-  rtl_->vcd->set_time_unit("1ps");
-  rtl_->vcd->open(vcd_path_.c_str());
+namespace {
+bool fst_name(const std::string& path) {
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".fst") == 0;
+}
+}  // namespace
+
+void RtlDeviceBase::open_vcd(const std::string& path) {
+  if (sc_core::sc_get_status() == sc_core::SC_ELABORATION) {
+    vcd_path_ = path;
+    allow_tracing(fst_name(path));
+    return;
+  }
+  if (!traceable_ || rtl_->writing())
+    throw std::logic_error(std::string(class_name_) +
+                           "::open_vcd during the simulation needs allow_tracing() before it "
+                           "and no file open");
+  if (fst_name(path) != rtl_->fst())
+    throw std::logic_error(std::string(class_name_) + "::open_vcd('" + path + "'): the model " +
+                           "writes " + (rtl_->fst() ? "FST" : "VCD") +
+                           " (allow_tracing(" + (rtl_->fst() ? "true" : "false") +
+                           ") chose it before the simulation)");
+  open_writer(path);
+  // The state the last evaluation left is this instant's: it is dumped here, at the
+  // next evaluation at a later instant (evaluate()).
+  rtl_->last_eval_ps = sc_core::sc_time_stamp().value();
+  rtl_->evaluated = true;
 }
 
-void RtlDeviceBase::end_of_simulation() {
-  if (!rtl_->vcd) return;
-  if (rtl_->evaluated) rtl_->vcd->dump(rtl_->last_eval_ps);
-  rtl_->vcd->close();
+void RtlDeviceBase::open_writer(const std::string& path) { rtl_->open_writer(path); }
+
+void RtlDeviceBase::close_vcd() {
+  if (!rtl_->writing()) return;
+  if (rtl_->evaluated) rtl_->dump(rtl_->last_eval_ps);
+  rtl_->close_writer();
+  rtl_->evaluated = false;
 }
+
+void RtlDeviceBase::start_of_simulation() {
+  if (!vcd_path_.empty()) open_writer(vcd_path_);
+}
+
+void RtlDeviceBase::end_of_simulation() { close_vcd(); }
 
 }  // namespace specular

@@ -6,10 +6,13 @@
 // Verilator's headers first: they define vl_time_stamp64() one way with SystemC's
 // headers already seen and another without, and the model was compiled without them.
 #include <verilated.h>
+#include <verilated_fst_c.h>
 #include <verilated_vcd_c.h>
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <type_traits>
 
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
@@ -19,7 +22,9 @@
 namespace specular {
 
 /// The verilated model (plain C++, evaluated from the twin's one process) and
-/// Verilator's waveform writer; the class Verilator made lives in RtlModel.
+/// Verilator's waveform writer (VCD, or FST for a model verilated with --trace-fst:
+/// one format per verilated class in Verilator 5); the class Verilator made lives in
+/// RtlModel.
 struct RtlDeviceBase::Verilated {
   /// The channels bound to the input pins (end_of_elaboration).
   struct Inputs {
@@ -27,7 +32,6 @@ struct RtlDeviceBase::Verilated {
     const sc_core::sc_signal_in_if<bool>*pin27, *pin28, *pin29, *pin30, *pin31, *pin32, *pin33, *pin34;
   };
   VerilatedContext context;
-  std::unique_ptr<VerilatedVcdC> vcd;
   std::uint64_t last_eval_ps = 0;  ///< when the model was last evaluated
   bool evaluated = false;
   Inputs inputs{};
@@ -35,8 +39,17 @@ struct RtlDeviceBase::Verilated {
   virtual ~Verilated() = default;
   /// Copies the pins into the model, evaluates it and writes the outputs that changed.
   virtual void evaluate(RtlDeviceBase& device) = 0;
-  /// Lets Verilator trace every net of the model into `vcd`.
-  virtual void trace(VerilatedVcdC& vcd) = 0;
+  /// Whether the model writes FST (its class verilated with --trace-fst), else VCD.
+  virtual bool fst() const = 0;
+  /// Opens Verilator's writer on `path` (1 ps resolution, SystemC's) and lets it trace
+  /// every net of the model.
+  virtual void open_writer(const std::string& path) = 0;
+  /// Whether a writer is open.
+  virtual bool writing() const = 0;
+  /// The nets' values at `ps` into the open writer.
+  virtual void dump(std::uint64_t ps) = 0;
+  /// Closes the open writer (if any).
+  virtual void close_writer() = 0;
 };
 
 /// `Top`: the class Verilator made (its root header included too: the ROMs are written
@@ -44,13 +57,16 @@ struct RtlDeviceBase::Verilated {
 /// `using Device = ...;` (the twin) and
 /// `template <class Top, class Update> void update(Device&, const Top&, const Update&)`
 /// that passes each net's last bits, its bits now and its write to `update`.
-template <class Top, class Nets>
+/// `Writer`: Verilator's writer the class was verilated for (VerilatedVcdC for --trace,
+/// VerilatedFstC for --trace-fst).
+template <class Top, class Nets, class Writer = VerilatedVcdC>
 struct RtlModel final : RtlDeviceBase::Verilated {
   /// The model's outputs after the last evaluation, as its port bits.
   struct Outputs {
     std::uint64_t pin24, pin25, pin26, reg9, reg1, rom38, norm, done35, select36;
   };
   Top top{&context};
+  std::unique_ptr<Writer> writer;
   Outputs outputs{};
   Nets nets{};
   bool outputs_valid = false;
@@ -61,13 +77,28 @@ struct RtlModel final : RtlDeviceBase::Verilated {
     top.cfg_literal = config.saturation == Saturation::literal;
     top.cfg_rom38_bank = rom38_bank(config);
   }
-  ~RtlModel() override { vcd.reset(); }  // the writer goes before the model it traces
+  ~RtlModel() override { writer.reset(); }  // the writer goes before the model it traces
 
   static std::unique_ptr<RtlDeviceBase::Verilated> make(const Config& config) {
     return std::make_unique<RtlModel>(config);
   }
 
-  void trace(VerilatedVcdC& writer) override { top.trace(&writer, 99); }
+  bool fst() const override { return std::is_same_v<Writer, VerilatedFstC>; }
+  void open_writer(const std::string& path) override {
+    writer = std::make_unique<Writer>();
+    top.trace(writer.get(), 99);
+    // SystemC's time resolution (1 ps by default) is the waveform's time unit.
+    writer->set_time_resolution("1ps");
+    writer->set_time_unit("1ps");
+    writer->open(path.c_str());
+  }
+  bool writing() const override { return writer != nullptr; }
+  void dump(std::uint64_t ps) override { writer->dump(ps); }
+  void close_writer() override {
+    if (!writer) return;
+    writer->close();
+    writer.reset();
+  }
 
   void evaluate(RtlDeviceBase& device) override {
     // The model runs at the default widths only (constructor): compile-time masks.

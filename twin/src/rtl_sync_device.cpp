@@ -2,6 +2,8 @@
 
 #include "Vspecular_device_sync_cc.h"
 #include "Vspecular_device_sync_cc___024root.h"
+#include "Vspecular_device_sync_cc_fst.h"  // the same verilated with --trace-fst (issue 27)
+#include "Vspecular_device_sync_cc_fst___024root.h"
 
 #include "specular/twin/rtl_sync_device.h"
 
@@ -24,7 +26,8 @@ struct SyncNets {
 RtlSyncDevice::RtlSyncDevice(sc_core::sc_module_name name, const Config& config, bool real_views)
     : RtlDeviceBase(name, config, real_views,
                     {"RtlSyncDevice", "synchronous RTL twin", "waveforms/specular_rtl_sync.gtkw",
-                     &RtlModel<Vspecular_device_sync_cc, SyncNets>::make}) {}
+                     &RtlModel<Vspecular_device_sync_cc, SyncNets>::make,
+                     &RtlModel<Vspecular_device_sync_cc_fst, SyncNets, VerilatedFstC>::make}) {}
 
 RtlSyncDevice::~RtlSyncDevice() = default;
 

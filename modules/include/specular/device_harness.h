@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -89,6 +90,11 @@ class DeviceHarness : public sc_core::sc_module {
   void trace(sc_core::sc_trace_file* file) const;
 
   const sc_core::sc_time& clock_period() const { return period_; }
+
+  /// Called (if set) with an operation's index in its batch just before its pins are
+  /// driven, and just after its results were taken at 35↑: where a trace window opens
+  /// and closes (specular_tb --trace-ops). Empty: nothing is called.
+  std::function<void(std::size_t)> before_drive, after_done;
 
  private:
   void on_select36();  // pass 1 is in register 9 while select 36 rises
@@ -265,6 +271,7 @@ void DeviceHarness<Device>::on_done35() {
   cycles_[done_seen_] = (sc_core::sc_time_stamp() - start_times_[done_seen_]) / period_;
   ++done_seen_;
   result_event_.notify(sc_core::SC_ZERO_TIME);
+  if (after_done) after_done(done_seen_ - 1);
 }
 
 template <class Device>
@@ -296,6 +303,7 @@ void DeviceHarness<Device>::run_batch(const std::vector<Operands>& in, std::vect
       if (start < earliest) start = earliest;
     }
     wait_until(start - quarter);
+    if (before_drive) before_drive(i);
     pin17_cos.write(op.cos);
     if constexpr (is_synchronous_device<Device>::value) pin27_start.write(true);
     if (reload) {

@@ -3,9 +3,11 @@
 namespace specular {
 
 SpecularPinTarget::SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
-                                     const sc_core::sc_time& clock_period, bool real_views)
+                                     const sc_core::sc_time& clock_period, bool real_views,
+                                     PinDelay delay)
     : SpecularTarget(name, config, clock_period),
-      harness("harness", config, clock_period, real_views, ClockMode::on_demand) {
+      harness("harness", config, clock_period, real_views, ClockMode::on_demand),
+      delay_policy_(delay) {
   SPECULAR_HAS_PROCESS(SpecularPinTarget);
   SC_METHOD(on_reset);
   sensitive << harness.pin29_reset_n.negedge_event();
@@ -30,9 +32,17 @@ void SpecularPinTarget::b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_ti
 void SpecularPinTarget::execute(const Operands& shared, const std::uint32_t* cos,
                                 std::size_t count, std::uint32_t* out, Result& last,
                                 sc_core::sc_time& delay) {
-  // Synchronise: the pins live in simulated time, not in the initiator's local time.
-  sc_core::wait(delay);
-  delay = sc_core::SC_ZERO_TIME;
+  if (delay_policy_ == PinDelay::consume) {
+    // Synchronise: the pins live in simulated time, not in the initiator's local time.
+    sc_core::wait(delay);
+    delay = sc_core::SC_ZERO_TIME;
+  }
+  // PinDelay::keep: the pins run from now (the call's simulated time), and `delay` is
+  // left as it came. This call then waits exactly the operation's latency (to pin 35),
+  // and the initiator's time advances by that wait plus the unchanged delay: the
+  // latency once, the delay once. (Running the pins at the local time now + delay
+  // instead would need a wait of delay + latency somewhere, on top of a delay that may
+  // not shrink: the delay twice.)
   operands_.assign(count, shared);
   for (std::size_t i = 0; i < count; ++i) operands_[i].cos = cos[i];
   // Hand the operands to the transactor and wait until pin 35 has risen on the last.

@@ -9,9 +9,26 @@
 
 namespace specular {
 
+/// What SpecularPinTarget's b_transport does with the initiator's annotated delay
+/// (docs/integration.md §6). Both give the same bits and the same pins relative to
+/// the call; they differ in where the pins sit in simulated time and in the delay
+/// returned.
+enum class PinDelay : std::uint8_t {
+  /// Wait the delay out, then run the pins; return 0. The pins sit at the initiator's
+  /// local time; the delay shrinks (legal, but refused by initiators that assert it).
+  consume,
+  /// Run the pins from the call's simulated time and return the delay unchanged: the
+  /// call waits exactly the operation's latency (start edge, then pin 35), which is the
+  /// time the initiator gains, so nothing is counted twice and the delay never
+  /// shrinks. For initiators that assert it does not (riscv-vp's memory interface).
+  keep,
+};
+
 /// Drives the device of Fig. 1 through PinHarness, as a TLM-to-pin bridge does
 /// (compare Xilinx libsystemctlm-soc's tlm2apb-bridge). Cycle-accurate: an operation
-/// first waits out the initiator's annotated delay, then the transactor drives pins
+/// first waits out the initiator's annotated delay (PinDelay::consume; with
+/// PinDelay::keep it starts from the call's time and leaves the delay as it came), then
+/// the transactor drives pins
 /// 17–33 and waits on the clock (pin 28) until pin 35 rises. START begins at the next
 /// rising clock edge at least a quarter period away (the harness's protocol); a batch
 /// streams one operation every 2 periods. If pin 29 was never pulsed since power-on,
@@ -29,14 +46,16 @@ namespace specular {
 /// returned, then runs — a START or an operand write waits its turn instead of being
 /// refused as busy. Reads never wait: they see STATUS.busy and the previous results
 /// while an operation runs. Debug transport never waits. Call b_transport from a
-/// thread (SC_THREAD or spawned).
+/// thread (SC_THREAD or spawned). `delay` picks what b_transport does with the
+/// annotated delay (PinDelay: consume, the default, or keep).
 class SpecularPinTarget : public SpecularTarget {
  public:
   SpecularPinTarget(sc_core::sc_module_name name, const Config& config = Config{},
                     const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS),
-                    bool real_views = false);
+                    bool real_views = false, PinDelay delay = PinDelay::consume);
 
   PinHarness harness;
+  PinDelay delay_policy() const { return delay_policy_; }
 
  protected:
   void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay) override;
@@ -48,6 +67,7 @@ class SpecularPinTarget : public SpecularTarget {
   void transact();  // the one process that drives the pins
   void on_reset();  // pin 29 fell: the control unit has seen a reset
 
+  PinDelay delay_policy_;
   bool reset_seen_ = false;
   std::vector<Operands> operands_;
   std::vector<Result> results_;

@@ -78,7 +78,8 @@ class SpecularTarget : public sc_core::sc_module {
   /// Runs `count` operations: cos λ from `cos[i]`, n and R, G, B from `shared`.
   /// Writes pins 24–26 of operation i to out[3i..3i+2] (32-bit two's complement) and
   /// everything of the last operation to `last`. Accounts for the time taken by
-  /// adding to `delay` (annotation) or by waiting (then `delay` is consumed first).
+  /// adding to `delay` (annotation) or by waiting (`pin`: after consuming `delay`, or
+  /// from now with `delay` kept, PinDelay).
   virtual void execute(const Operands& shared, const std::uint32_t* cos, std::size_t count,
                        std::uint32_t* out, Result& last, sc_core::sc_time& delay) = 0;
 

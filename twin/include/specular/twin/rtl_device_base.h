@@ -39,9 +39,20 @@ class RtlDeviceBase : public DevicePins {
   /// Verilator into the file open_vcd() names (GTKWave: waveforms/specular_rtl.gtkw,
   /// waveforms/specular_rtl_sync.gtkw for the synchronous variant).
   void trace(sc_core::sc_trace_file*) const override {}
-  /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`
-  /// from the start of simulation on. Call before sc_start (std::logic_error after).
+  /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`:
+  /// called before sc_start, from the start of simulation on; called during the
+  /// simulation (after allow_tracing()), from now on, until close_vcd() — a window
+  /// (specular_tb --trace-ops, --trace-failures). std::logic_error otherwise.
+  /// A name ending in ".fst" gets GTKWave's FST, written by Verilator (the model
+  /// verilated with --trace-fst); during the simulation, only in the format
+  /// allow_tracing() chose.
   void open_vcd(const std::string& path);
+  /// Before sc_start: let open_vcd() be called later, during the simulation (the pins
+  /// a trace shows as they change are made to wake the model from the start), in FST
+  /// if `fst` (the model verilated with --trace-fst is used from the start), else VCD.
+  void allow_tracing(bool fst = false);
+  /// Writes the last instant and closes the file open_vcd() opened (if any).
+  void close_vcd();
 
   // ---- what the harness watches (observation outputs both twins have) ----
   wire select36{"select36"};
@@ -60,6 +71,7 @@ class RtlDeviceBase : public DevicePins {
     const char* twin_name;   ///< "RTL twin": names the twin in constructor errors
     const char* gtkw;        ///< the GTKWave save file for its VCD
     std::unique_ptr<Verilated> (*make_model)(const Config&);
+    std::unique_ptr<Verilated> (*make_fst_model)(const Config&);  ///< --trace-fst (issue 27)
   };
 
   /// Refuses a Config the model was not verilated for and `real_views` (accepted for
@@ -69,7 +81,7 @@ class RtlDeviceBase : public DevicePins {
                 const Variant& variant);
 
  private:
-  template <class Top, class Nets>
+  template <class Top, class Nets, class Writer>
   friend struct RtlModel;
 
   void before_end_of_elaboration() override;
@@ -77,12 +89,16 @@ class RtlDeviceBase : public DevicePins {
   void start_of_simulation() override;
   void end_of_simulation() override;
   void evaluate();
+  void open_writer(const std::string& path);
 
   const char* class_name_;
   Config config_;
   Formats formats_;
   std::unique_ptr<Verilated> rtl_;
+  std::unique_ptr<Verilated> (*make_model_)(const Config&);
+  std::unique_ptr<Verilated> (*make_fst_model_)(const Config&);
   std::string vcd_path_;
+  bool traceable_ = false;  ///< open_vcd() may be called during the simulation
 };
 
 }  // namespace specular

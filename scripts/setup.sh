@@ -26,7 +26,7 @@ set -euo pipefail
 #   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/silicon.sh, gatesim.sh,
 #                                       docs/silicon.md): the OSU 0.18 um standard cells
 #                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
-#   nlohmann-json3-dev                  JSON for specular_tb's --format json and the partial
+#   nlohmann-json3-dev                  JSON: specular_tb's report settings and summary, the partial
 #                                       results of sharded runs (--shard, --partial, --merge)
 #   slurm-wlm, munge, jq                scripts/farm.sh on Slurm, scripts/slurm_cluster.sh (a
 #                                       single-node cluster) and its test tests/farm/farm_test.sh

@@ -63,6 +63,10 @@ Json summary_json(const Summary& s, bool places) {
   j["max_norm_error"] = worst_json(s.norm, true, places);
   j["max_norm_exact_error"] = worst_json(s.norm_exact, false, places);
   j["max_out_error"] = worst_json(s.out, true, places);
+  if (!s.failure_traces.empty() || s.failure_traces_left_out > 0) {  // --trace-failures
+    j["failure_traces"] = s.failure_traces;
+    j["failure_traces_left_out"] = s.failure_traces_left_out;
+  }
   j["cycles_min"] = s.cycles_min;
   j["cycles_max"] = s.cycles_max;
   if (places) j["checksum"] = hex64(s.checksum);

@@ -1,8 +1,6 @@
-// The JSON pieces of the partial results of sharded runs (partial.h), written and read
-// with nlohmann-json: the settings and the summary, the latter with each maximum's
-// place and the results' checksum. (specular_tb --format json keeps issue 27's
-// buffered writer, report.cpp, which JSON Lines is built on; its summary object has
-// the same keys as summary_json(summary, false).)
+// The JSON objects specular_tb's report (--format json and jsonl: settings, summary)
+// and the partial results of sharded runs (partial.h) share, written and read with
+// nlohmann-json. The report's rows stay on issue 27's buffered writer (report.cpp).
 #pragma once
 
 #include <memory>

@@ -38,13 +38,15 @@ TEST(ProveShard, MergedShardsEqualTheUnshardedProof) {
   for (const std::string model : {"rtl", "rtl-sync"}) {
     SCOPED_TRACE(model);
     const fs::path dir = scratch_subdir("merge_" + model);
-    const std::string run = "--model " + model + " --cos-stride 4096";
+    const std::string run = "--model " + model + " --cos-stride 16384";
     const Outcome whole = run_prove(run + " --partial " + q(dir / "whole.json"), dir);
     ASSERT_EQ(whole.status, 0) << whole.err;
-    // 24 devices, 23 buildable (energy x minimax with clamp overflows ROM 38 ...), each
-    // 17 cos codes (0, 4096, ..., 65536) x 1000 n.
+    // 24 devices, 23 buildable (the core refuses device-energy/literal/patent), each
+    // 5 cos codes (0, 16384, ..., 65536) x 1000 n.
     EXPECT_NE(whole.out.find("24 device(s)"), std::string::npos) << whole.out;
-    EXPECT_NE(whole.out.find("patent/clamp/patent: 17000 operations, 0 differ, 0 off timing  PASS"),
+    EXPECT_NE(whole.out.find("device-energy/literal/patent: refused, as the core refuses it  PASS"),
+              std::string::npos) << whole.out;
+    EXPECT_NE(whole.out.find("patent/clamp/patent: 5000 operations, 0 differ, 0 off timing  PASS"),
               std::string::npos) << whole.out;
     std::string merge = "--merge";
     for (int i = 4; i >= 0; --i) {

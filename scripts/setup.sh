@@ -26,6 +26,11 @@ set -euo pipefail
 #   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/silicon.sh, gatesim.sh,
 #                                       docs/silicon.md): the OSU 0.18 um standard cells
 #                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
+#   nlohmann-json3-dev                  JSON: specular_tb's report settings and summary, the partial
+#                                       results of sharded runs (--shard, --partial, --merge)
+#   slurm-wlm, munge, jq                scripts/farm.sh on Slurm, scripts/slurm_cluster.sh (a
+#                                       single-node cluster) and its test tests/farm/farm_test.sh
+#                                       (jq compares the merged and unsharded JSON)
 PACKAGES=(
   build-essential cmake pkg-config
   libsystemc-dev
@@ -37,6 +42,8 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev
   verilator iverilog yosys
   qflow-tech-osu018 opensta bc
+  nlohmann-json3-dev
+  slurm-wlm munge jq
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

@@ -148,15 +148,25 @@ bool ListSource::next(std::vector<Stimulus>& chunk, std::size_t max) {
   return !chunk.empty();
 }
 
-SweepSource::SweepSource(const Formats& formats, const std::array<unsigned, 3>& rgb)
-    : formats_(formats), rgb_(rgb), cos_codes_(sweep_cos_codes(formats)) {}
+SweepSource::SweepSource(const Formats& formats, const std::array<unsigned, 3>& rgb,
+                         const Shard& shard)
+    : formats_(formats), rgb_(rgb), cos_codes_(sweep_cos_codes(formats)), shard_(shard) {}
 
-std::size_t SweepSource::size() const { return cos_codes_.size() * (n_max - n_min + 1); }
+std::size_t SweepSource::size() const {
+  std::size_t ns = 0;
+  for (unsigned n = n_min; n <= n_max; ++n) ns += shard_has_n(n, shard_) ? 1 : 0;
+  return cos_codes_.size() * ns;
+}
 
 bool SweepSource::next(std::vector<Stimulus>& chunk, std::size_t max) {
   chunk.clear();
   while (chunk.size() < max && n_ <= n_max) {
+    if (!shard_has_n(n_, shard_)) {
+      ++n_;
+      continue;
+    }
     Stimulus s;
+    s.index = (n_ - n_min) * cos_codes_.size() + cos_index_;
     s.operands.cos = cos_codes_[cos_index_];
     s.cos = formats_.cos.to_real(s.operands.cos);
     s.n = n_;
@@ -172,8 +182,12 @@ bool SweepSource::next(std::vector<Stimulus>& chunk, std::size_t max) {
   return !chunk.empty();
 }
 
-RandomSource::RandomSource(const Formats& formats, std::size_t count, std::uint64_t seed)
-    : formats_(formats), count_(count), engine_(seed) {}
+RandomSource::RandomSource(const Formats& formats, std::size_t count, std::uint64_t seed,
+                           const Shard& shard)
+    : formats_(formats),
+      begin_(shard_block(count, shard).first),
+      end_(shard_block(count, shard).second),
+      engine_(seed) {}
 
 std::uint64_t RandomSource::draw(std::uint64_t span) {
   // Rejection sampling: uniform and identical on every platform.
@@ -188,8 +202,9 @@ bool RandomSource::next(std::vector<Stimulus>& chunk, std::size_t max) {
   chunk.clear();
   const auto rgb_span = static_cast<std::uint64_t>(formats_.rgb.max_code()) + 1;
   const auto cos_span = static_cast<std::uint64_t>(formats_.cos.one()) + 1;
-  while (chunk.size() < max && produced_ < count_) {
+  while (chunk.size() < max && produced_ < end_) {
     Stimulus s;
+    s.index = produced_;
     s.operands.cos = static_cast<code_t>(draw(cos_span));
     s.cos = formats_.cos.to_real(s.operands.cos);
     s.n = static_cast<unsigned>(n_min + draw(n_max - n_min + 1));
@@ -198,7 +213,7 @@ bool RandomSource::next(std::vector<Stimulus>& chunk, std::size_t max) {
       s.rgb[ch] = static_cast<unsigned>(draw(rgb_span));
       s.operands.rgb[ch] = s.rgb[ch];
     }
-    chunk.push_back(s);
+    if (produced_ >= begin_) chunk.push_back(s);  // before the shard's block: drawn, dropped
     ++produced_;
   }
   return !chunk.empty();

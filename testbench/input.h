@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "shard.h"
 #include "specular/core.h"
 
 namespace specular {
@@ -23,6 +24,7 @@ struct Stimulus {
   unsigned n = 1;
   std::array<unsigned, 3> rgb{};   ///< R, G, B intensities
   Operands operands;               ///< registers 1, 2, 10–12 (cos quantised)
+  std::size_t index = 0;           ///< its place in the unsharded run (0-based; shard.h)
 };
 
 /// Checks and quantises user values with the core's formats (throws UsageError with
@@ -76,9 +78,10 @@ class ListSource : public StimulusSource {
 
 /// n = 1..1000 (outer) × sweep_cos_codes (inner), one RGB for all. The inner loop
 /// over cos λ lets the pin harness start every 2 T (register 2 stays loaded).
+/// A shard runs the n of its share (shard.h).
 class SweepSource : public StimulusSource {
  public:
-  SweepSource(const Formats& formats, const std::array<unsigned, 3>& rgb);
+  SweepSource(const Formats& formats, const std::array<unsigned, 3>& rgb, const Shard& shard = {});
   bool next(std::vector<Stimulus>& chunk, std::size_t max) override;
   std::size_t size() const override;
 
@@ -86,6 +89,7 @@ class SweepSource : public StimulusSource {
   Formats formats_;
   std::array<unsigned, 3> rgb_;
   std::vector<code_t> cos_codes_;
+  Shard shard_;
   unsigned n_ = n_min;
   std::size_t cos_index_ = 0;
 };
@@ -94,17 +98,18 @@ class SweepSource : public StimulusSource {
 /// cos code uniform in [0, 2^F], n uniform in 1..1000, R, G, B uniform in the RGB
 /// range. The draws use the raw engine output (not std::uniform_int_distribution,
 /// whose algorithm differs between standard libraries), so a seed gives the same
-/// operations on every platform.
+/// operations on every platform. A shard draws every operation before its block and
+/// drops it (shard.h), so its draws are the unsharded run's.
 class RandomSource : public StimulusSource {
  public:
-  RandomSource(const Formats& formats, std::size_t count, std::uint64_t seed);
+  RandomSource(const Formats& formats, std::size_t count, std::uint64_t seed, const Shard& shard = {});
   bool next(std::vector<Stimulus>& chunk, std::size_t max) override;
-  std::size_t size() const override { return count_; }
+  std::size_t size() const override { return end_ - begin_; }
 
  private:
   std::uint64_t draw(std::uint64_t span);  // uniform in [0, span)
   Formats formats_;
-  std::size_t count_;
+  std::size_t begin_, end_;                // the shard's block of the count
   std::size_t produced_ = 0;
   std::mt19937_64 engine_;
 };

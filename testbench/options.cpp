@@ -30,6 +30,8 @@ const std::map<std::string, std::string>& valued_options() {
       {"--vcd", "a file name"},
       {"--format", "one of: text, csv, json, jsonl"},
       {"--output", "a file name"},
+      {"--shard", "I/N, 0 <= I < N (e.g. 0/4)"},          // issue 25: shard.h
+      {"--partial", "a file name (JSON partial result)"},  // issue 25: partial.h
       {"--trace-ops", "FIRST:COUNT, operations FIRST .. FIRST+COUNT-1 (from 0), COUNT >= 1"},
       {"--trace-failures", "a directory"},
       {"--trace-failures-max", "a count in [1, 1000]"},
@@ -152,6 +154,11 @@ Options parse_options(const std::vector<std::string>& args) {
       } else if (option == "--output") {
         if (value.empty()) throw UsageError("the file name is empty");
         o.output_path = value;
+      } else if (option == "--shard") {  // issue 25
+        o.shard = parse_shard(value);
+      } else if (option == "--partial") {
+        if (value.empty()) throw UsageError("the file name is empty");
+        o.partial_path = value;
       }
     } catch (const UsageError& e) {
       const std::string message = e.what();
@@ -229,6 +236,18 @@ Options parse_options(const std::vector<std::string>& args) {
     throw UsageError("--trace-failures-max needs --trace-failures DIR");
   if (!o.vcd_path.empty() && !o.output_path.empty() && o.vcd_path == o.output_path)
     throw UsageError("--vcd and --output name the same file '" + o.vcd_path + "'");
+  // issue 25: sharding (shard.h); an input file's size is checked once it is read.
+  if (seen.count("--shard") && o.stimulus == StimulusKind::point)
+    throw UsageError("--shard applies to --sweep, --random N and --input FILE only (one point is not split)");
+  if (o.stimulus == StimulusKind::sweep && o.shard.count > n_max - n_min + 1)
+    throw UsageError("--shard: N = " + std::to_string(o.shard.count) +
+                     " is outside the allowed range [1, 1000] for --sweep (split by n)");
+  if (o.stimulus == StimulusKind::random && o.shard.count > o.random_count)
+    throw UsageError("--shard: N = " + std::to_string(o.shard.count) + " is outside the allowed range [1, " +
+                     std::to_string(o.random_count) + "] for --random " + std::to_string(o.random_count) +
+                     " (every shard at least one computation)");
+  if (!o.partial_path.empty() && (o.partial_path == o.output_path || o.partial_path == o.vcd_path))
+    throw UsageError("--partial names the same file as --output or --vcd: '" + o.partial_path + "'");
   return o;
 }
 
@@ -344,6 +363,14 @@ Output:
   --real-views              with --vcd: also trace cos, register 9, K(n), K*A and pins
                             24-26 as real-valued *_real variables, for viewers that
                             cannot show a bus as fixed point (about 1.3x the trace time)
+  --shard I/N               run shard I (0-based) of N: --sweep by n ((n-1) mod N = I),
+                            --random and --input by contiguous blocks of operations;
+                            the N shards together run exactly the unsharded operations
+  --partial FILE            also write this run's partial result (JSON: settings, commit,
+                            shard, summary with the maxima's places, checksum, timing)
+  specular_tb --merge FILE... [--format text|json] [--output FILE] [--partial FILE]
+                            merge every shard's partial into the unsharded run's report
+                            (refuses a missing, duplicated or mismatched shard)
   --help                    this text
 
 Fields per computation (csv/json): cos, n, r, g, b, cos_q (register 1 as a real),

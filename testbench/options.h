@@ -10,6 +10,7 @@
 
 #include "report.h"
 #include "run_models.h"
+#include "shard.h"
 
 namespace specular {
 namespace tb {
@@ -36,6 +37,8 @@ struct Options {
   bool real_views = false;                         ///< --real-views (needs --vcd)
   OutputFormat format = OutputFormat::text;        ///< --format
   std::string output_path;                         ///< --output; empty = standard output
+  Shard shard{};                                   ///< --shard I/N (shard.h); 0/1 = all
+  std::string partial_path;                        ///< --partial FILE (partial.h)
   bool trace_window = false;                       ///< --trace-ops given
   std::uint64_t trace_first = 0;                   ///< --trace-ops FIRST (from 0)
   std::uint64_t trace_count = 0;                   ///< --trace-ops COUNT (>= 1)

@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "json_report.h"  // issue 25: settings and summary objects
 #include "run_models.h"
 #include "usage_error.h"
 
@@ -48,13 +49,6 @@ const char* csv_header() {
 }
 
 namespace {
-
-/// Shortest text that reads back as the same double (CSV and JSON stay exact).
-void put_real(std::ostream& out, double value) {
-  char buffer[32];
-  const auto done = std::to_chars(buffer, buffer + sizeof buffer, value);
-  out.write(buffer, done.ptr - buffer);
-}
 
 /// Rows are formatted into a block of memory and written to the stream a block at a
 /// time: an ostream insertion per field held the CSV at about 0.3 M rows per second,
@@ -298,16 +292,10 @@ class JsonReport : public Report {
   explicit JsonReport(std::ostream& out) : out_(out) {}
   void begin(const RunDescription& run) override {
     formats_ = std::make_unique<Formats>(run.config.widths);
-    const Formats& f = *formats_;
-    out_ << "{\n  \"tool\": \"specular_tb\",\n  \"settings\": {\"model\": \"" << run.model
-         << "\", \"stimulus\": \"" << escape(run.stimulus) << "\", \"normalisation\": \""
-         << to_string(run.config.normalisation) << "\", \"saturation\": \""
-         << to_string(run.config.saturation) << "\", \"constants\": \""
-         << to_string(run.config.constants) << "\", \"clock_period_ps\": " << run.clock_period_ps
-         << ", \"operations\": " << run.operations << ",\n    \"formats\": {\"cos\": \""
-         << f.cos.name() << "\", \"reg9\": \"" << f.reg9.name() << "\", \"rom38\": \""
-         << f.rom38.name() << "\", \"norm\": \"" << f.norm.name() << "\", \"out\": \""
-         << f.out.name() << "\"}},\n  \"results\": [";
+    // issue 25: settings and summary through nlohmann-json (json_report.h), the objects
+    // a merge of sharded runs writes too; rows stay on the buffered writer.
+    out_ << "{\n  \"tool\": \"specular_tb\",\n  \"settings\": " << dump_json(settings_json(run))
+         << ",\n  \"results\": [";
   }
   void row(const Comparison& c) override {
     const Formats& f = *formats_;
@@ -365,57 +353,11 @@ class JsonReport : public Report {
   }
   void end(const Summary& s, double) override {
     buffer_.write();
-    out_ << (first_ ? "],\n" : "\n  ],\n") << "  \"summary\": {\"count\": " << s.count
-         << ", \"failures\": " << s.failures << ", \"pass\": " << (s.pass() ? "true" : "false")
-         << ",\n    \"failures_by_check\": {\"approx\": " << s.approx_failures
-         << ", \"norm\": " << s.norm_failures << ", \"out\": " << s.out_failures
-         << ", \"cycles\": " << s.cycles_failures << "},\n";
-    worst("max_approx_error", s.approx, true);
-    worst("max_norm_error", s.norm, true);
-    worst("max_norm_exact_error", s.norm_exact, false);
-    worst("max_out_error", s.out, true);
-    if (!s.failure_traces.empty() || s.failure_traces_left_out > 0) {
-      out_ << "    \"failure_traces\": [";
-      for (std::size_t i = 0; i < s.failure_traces.size(); ++i)
-        out_ << (i ? ", \"" : "\"") << escape(s.failure_traces[i]) << '"';
-      out_ << "], \"failure_traces_left_out\": " << s.failure_traces_left_out << ",\n";
-    }
-    out_ << "    \"cycles_min\": ";
-    put_real(out_, s.cycles_min);
-    out_ << ", \"cycles_max\": ";
-    put_real(out_, s.cycles_max);
-    out_ << "}\n}\n";
+    out_ << (first_ ? "],\n" : "\n  ],\n") << "  \"summary\": " << dump_json(summary_json(s))
+         << "\n}\n";
   }
 
  private:
-  void worst(const char* key, const Worst& w, bool with_tolerance) {
-    out_ << "    \"" << key << "\": {\"value\": ";
-    put_real(out_, w.error);
-    out_ << ", \"cos_q\": ";
-    put_real(out_, w.cos_q);
-    out_ << ", \"n\": " << w.n;
-    if (with_tolerance) {
-      out_ << ", \"tolerance_used\": ";
-      put_real(out_, w.tolerance_used);
-    }
-    out_ << "},\n";
-  }
-  static std::string escape(const std::string& text) {
-    std::string s;
-    for (char ch : text) {
-      if (ch == '"' || ch == '\\') {
-        s += '\\';
-        s += ch;
-      } else if (static_cast<unsigned char>(ch) < 0x20) {
-        char buffer[8];
-        std::snprintf(buffer, sizeof buffer, "\\u%04x", ch);
-        s += buffer;
-      } else {
-        s += ch;
-      }
-    }
-    return s;
-  }
   std::ostream& out_;
   RowBuffer buffer_{out_};
   RowBuffer::Column columns_[14];

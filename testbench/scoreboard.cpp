@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 
 #include "run_models.h"
@@ -9,11 +10,35 @@
 namespace specular {
 namespace tb {
 
+std::uint64_t result_hash(std::size_t index, const Result& r, double cycles) {
+  std::uint64_t cycle_bits;
+  std::memcpy(&cycle_bits, &cycles, sizeof cycle_bits);
+  // FNV-1a over the fields' 64-bit values, then a splitmix64 finaliser so that the
+  // sum of many hashes stays well mixed.
+  std::uint64_t h = 14695981039346656037ull;
+  for (const std::uint64_t v :
+       {static_cast<std::uint64_t>(index), static_cast<std::uint64_t>(r.reg1),
+        static_cast<std::uint64_t>(r.reg9_pass1), static_cast<std::uint64_t>(r.reg9_pass2),
+        static_cast<std::uint64_t>(r.rom38_k), static_cast<std::uint64_t>(r.norm39),
+        static_cast<std::uint64_t>(r.out[0]), static_cast<std::uint64_t>(r.out[1]),
+        static_cast<std::uint64_t>(r.out[2]), cycle_bits})
+    for (int byte = 0; byte < 8; ++byte) {
+      h ^= (v >> (8 * byte)) & 0xff;
+      h *= 1099511628211ull;
+    }
+  h ^= h >> 30;
+  h *= 0xbf58476d1ce4e5b9ull;
+  h ^= h >> 27;
+  h *= 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+
 void Worst::consider(double err, double tolerance, const Comparison& c) {
   if (n == 0 || err > error) {
     error = err;
     cos_q = c.ref.cos_q;
     n = c.stimulus.n;
+    at = c.stimulus.index;
   }
   if (tolerance > 0) tolerance_used = std::max(tolerance_used, err / tolerance);
 }
@@ -72,6 +97,7 @@ void Scoreboard::record(const Comparison& c) {
                    reference::out_tolerance(c.k, c.stimulus.rgb[ch], formats_.out.lsb()), c);
   s.cycles_min = std::min(s.cycles_min, c.cycles);
   s.cycles_max = std::max(s.cycles_max, c.cycles);
+  s.checksum += result_hash(c.stimulus.index, c.result, c.cycles);
 }
 
 }  // namespace tb

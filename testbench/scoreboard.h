@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@
 
 namespace specular {
 namespace tb {
+
+/// The hash Summary::checksum adds for one computation.
+std::uint64_t result_hash(std::size_t index, const Result& result, double cycles);
 
 /// One computation as reported: what went in, what the device held, the reference.
 struct Comparison {
@@ -37,6 +41,8 @@ struct Worst {
   double error = 0;               ///< largest |model − reference|
   double cos_q = 0;               ///< at this cos λ (as held in register 1) …
   unsigned n = 0;                 ///< … and this n (0: no computation yet)
+  std::size_t at = 0;             ///< … the operation's index in the unsharded run (the
+                                  ///< first one with this error: a merge's tie-break)
   double tolerance_used = 0;      ///< largest error/tolerance (1 = at the bound)
   void consider(double err, double tolerance, const Comparison& c);
 };
@@ -50,6 +56,9 @@ struct Summary {
   Worst norm_exact;               ///< |norm − norm_exact| (the formula's own error; no bound)
   Worst out;                      ///< max over channels of |out − out_ref|
   double cycles_min = 0, cycles_max = 0;
+  /// Sum (mod 2^64) over the computations of a hash of (index, every result code,
+  /// cycles): independent of order, so the shards' checksums add up to the whole run's.
+  std::uint64_t checksum = 0;
   std::vector<std::string> failure_traces;  ///< --trace-failures: the files written
   std::size_t failure_traces_left_out = 0;  ///< failures past --trace-failures-max
   bool pass() const { return count > 0 && failures == 0; }

@@ -17,6 +17,7 @@
 #include "input.h"
 #include "options.h"
 #include "output_file.h"
+#include "partial.h"
 #include "progress.h"
 #include "report.h"
 #include "run_models.h"
@@ -33,6 +34,8 @@ namespace {
 struct Plan {
   std::unique_ptr<StimulusSource> source;
   std::string description;  // for the report header
+  std::size_t whole_operations = 0;   // the unsharded run's count
+  std::uint64_t input_checksum = 0;   // --input: every operation of the file (partial.h)
 };
 
 Plan make_plan(const Options& o, const Formats& formats) {
@@ -41,20 +44,41 @@ Plan make_plan(const Options& o, const Formats& formats) {
     case StimulusKind::point:
       plan.source = std::make_unique<ListSource>(
           std::vector<Stimulus>{make_stimulus(formats, o.cos, o.n, o.rgb, "--cos/--n/--rgb")});
+      plan.whole_operations = 1;
       plan.description = "--cos/--n/--rgb";
       break;
-    case StimulusKind::input:
-      plan.source = std::make_unique<ListSource>(read_stimuli_file(o.input_path, formats));
+    case StimulusKind::input: {
+      std::vector<Stimulus> all = read_stimuli_file(o.input_path, formats);
+      if (o.shard.count > all.size())
+        throw UsageError("--shard: N = " + std::to_string(o.shard.count) + " is outside the allowed range [1, " +
+                         std::to_string(all.size()) + "] for '" + o.input_path + "' (" +
+                         std::to_string(all.size()) + " operations; every shard at least one)");
+      for (std::size_t i = 0; i < all.size(); ++i) {
+        all[i].index = i;
+        Result ops;  // the operation's codes, hashed like a result
+        ops.reg1 = all[i].operands.cos;
+        ops.reg9_pass1 = all[i].operands.n;
+        for (int ch = 0; ch < 3; ++ch) ops.out[ch] = all[i].operands.rgb[ch];
+        plan.input_checksum += result_hash(i, ops, 0);
+      }
+      plan.whole_operations = all.size();
+      const auto [first, last] = shard_block(all.size(), o.shard);
+      all.erase(all.begin() + static_cast<std::ptrdiff_t>(last), all.end());
+      all.erase(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(first));
+      plan.source = std::make_unique<ListSource>(std::move(all));
       plan.description = "--input " + o.input_path;
       break;
+    }
     case StimulusKind::sweep: {
       const Stimulus any = make_stimulus(formats, 1.0, 1, o.rgb, "--rgb");
-      plan.source = std::make_unique<SweepSource>(formats, any.rgb);
+      plan.whole_operations = SweepSource(formats, any.rgb).size();
+      plan.source = std::make_unique<SweepSource>(formats, any.rgb, o.shard);
       plan.description = "--sweep";
       break;
     }
     case StimulusKind::random:
-      plan.source = std::make_unique<RandomSource>(formats, o.random_count, o.seed);
+      plan.whole_operations = o.random_count;
+      plan.source = std::make_unique<RandomSource>(formats, o.random_count, o.seed, o.shard);
       plan.description =
           "--random " + std::to_string(o.random_count) + " --seed " + std::to_string(o.seed);
       break;
@@ -132,6 +156,8 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   }
   std::optional<AtomicOutputStream> output_file;
   if (!o.output_path.empty()) output_file.emplace(o.output_path, "--output");
+  std::optional<AtomicOutputStream> partial_file;  // issue 25: partial.h
+  if (!o.partial_path.empty()) partial_file.emplace(o.partial_path, "--partial");
   std::optional<AtomicFile> vcd_file;
   // A name ending in .fst asks for FST: the twins' Verilator writes it directly (their
   // models verilated with --trace-fst); the pin model writes a VCD that GTKWave's
@@ -180,6 +206,9 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   description.clock_period_ps = o.clock_period_ps;
   description.operations = plan.source->size();
   description.text_rows = o.stimulus != StimulusKind::sweep;
+  RunDescription whole = description;  // what every shard of this run shares (partial.h)
+  whole.operations = plan.whole_operations;
+  if (!o.shard.whole()) description.stimulus += " --shard " + o.shard.text();
   report->begin(description);
 
   Scoreboard scoreboard(o.config, latency_cycles(settings.model));
@@ -239,6 +268,15 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   report_stream.flush();
   if (!report_stream) throw UsageError("cannot write the report (disk full?)");
 
+  if (partial_file) {
+    const ShardTiming timing{seconds, process_cpu_seconds()};
+    partial_file->stream()
+        << partial_json(partial_settings(whole, o.rgb, plan.input_checksum), o.shard,
+                        scoreboard.summary(), timing)
+               .dump(2, ' ', false, Json::error_handler_t::replace)
+        << '\n';
+    partial_file->commit();
+  }
   if (output_file) output_file->commit();
   if (vcd_file && convert) convert_to_fst(vcd2fst, settings.vcd_base + ".vcd", vcd_file->temp_path());
   if (vcd_file) vcd_file->commit();
@@ -250,6 +288,8 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
 int run_testbench(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
                   const ResultTap& tap) {
   try {
+    if (!args.empty() && args.front() == "--merge")  // issue 25: partial.h
+      return run_merge(std::vector<std::string>(args.begin() + 1, args.end()), out, err);
     const Options options = parse_options(args);
     if (options.help) {
       out << help_text();

@@ -1,0 +1,301 @@
+#!/usr/bin/env bash
+# farm.sh: a named regression as independent tasks on a batch farm (issue 25).
+#
+#   scripts/farm.sh submit REGRESSION [options]   REGRESSION: smoke (minutes) or full
+#   scripts/farm.sh wait DIR                      wait for a Slurm submission's merge
+#   scripts/farm.sh resubmit DIR [options]        run again only the tasks that failed
+#   scripts/farm.sh task DIR ID                   one task (what each array task runs)
+#   scripts/farm.sh merge DIR                     the merge (what the merge job runs)
+#
+# Options of submit and resubmit:
+#   --out DIR          the run's folder (default: farm-REGRESSION-<UTC time> here)
+#   --build DIR        the build with specular_tb and specular_prove (default: build)
+#   --executor slurm|local  default: slurm when sbatch and a reachable controller exist
+#   --jobs P           local: P tasks at a time (default: nproc)
+#   --partition NAME, --account NAME, --time LIMIT (default 01:00:00),
+#   --array-width W    Slurm: at most W array tasks at a time (sbatch --array=...%W)
+#
+# Every task is (what, index, count) -> a partial result (specular_tb or specular_prove
+# --shard I/N --partial FILE); the merge checks that every task finished (naming the
+# failed or killed one and its log), merges each group of shards with the tool's own
+# --merge, and writes report.md and report.json. One folder holds it all:
+#   tasks.tsv  logs/task-ID.log  status/ID.json  partials/ID.json  merged/GROUP.*
+#   report.md  report.json  submitted_at  (and, with Slurm, jobs.txt)
+# The local executor runs the same task and merge commands, P at a time (xargs -P).
+set -euo pipefail
+
+script="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/$(basename "${BASH_SOURCE[0]}")"
+root="$(cd "$(dirname "$script")/.." && pwd)"
+
+die() { echo "farm.sh: error: $*" >&2; exit 2; }
+
+# ---- the regressions -----------------------------------------------------------------
+# One line per task: ID <tab> GROUP <tab> KIND <tab> ARGUMENTS. KIND is tb or prove;
+# the task runs "$build/testbench/specular_KIND ARGUMENTS --shard I/N --partial ...".
+# Tasks of one GROUP are the N shards of one run and merge into one answer.
+emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
+  local group=$1 kind=$2 n=$3
+  shift 3
+  local i
+  for ((i = 0; i < n; i++)); do
+    printf '%s\t%s\t%s\t%s --shard %d/%d\n' "$next_id" "$group" "$kind" "$*" "$i" "$n"
+    next_id=$((next_id + 1))
+  done
+}
+
+regression_tasks() {
+  next_id=0
+  case "$1" in
+    smoke)  # about a minute of CPU: every mechanism once, every model kind once
+      emit_group tb_sweep_core tb 4 --sweep --model core
+      emit_group tb_random_pin tb 2 --random 20000 --seed 11 --model pin
+      emit_group tb_random_rtl tb 2 --random 20000 --seed 12 --model rtl
+      emit_group prove_rtl prove 4 --model rtl --cos-stride 64
+      emit_group prove_rtl_sync prove 2 --model rtl-sync --cos-stride 64
+      ;;
+    full)  # every proof of every model and device, every sweep, a long random run
+      emit_group prove_rtl prove 50 --model rtl
+      emit_group prove_rtl_sync prove 50 --model rtl-sync
+      local model device
+      for model in pin tlm; do
+        for device in $("$build/testbench/specular_prove" --help | sed -n 's/.*one of: \(.*\); or all/\1/p' | tr -d ','); do
+          emit_group "prove_${model}_${device//\//_}" prove 20 --model "$model" --device "$device"
+        done
+      done
+      for model in core pin tlm rtl rtl-sync; do
+        emit_group "tb_sweep_${model//-/_}" tb 10 --sweep --model "$model"
+      done
+      emit_group tb_random_pin tb 20 --random 10000000 --seed 1 --model pin
+      ;;
+    *) die "unknown regression '$1' (allowed: smoke, full)" ;;
+  esac
+}
+
+# ---- options ---------------------------------------------------------------------------
+parse_options() {
+  out_dir="" build="$root/build" executor="" jobs="$(nproc)" partition="" account=""
+  time_limit="01:00:00" width=""
+  while (($#)); do
+    case "$1" in
+      --out|--build|--executor|--jobs|--partition|--account|--time|--array-width)
+        (($# >= 2)) || die "option $1 needs a value"
+        case "$1" in
+          --out) out_dir=$2 ;;
+          --build) build=$(cd "$2" 2>/dev/null && pwd) || die "--build: '$2' is not a folder" ;;
+          --executor) [[ $2 == slurm || $2 == local ]] || die "--executor: '$2' is not one of: slurm, local"
+                      executor=$2 ;;
+          --jobs) [[ $2 =~ ^[0-9]+$ ]] && (($2 >= 1 && $2 <= 4096)) || die "--jobs: '$2' is outside the allowed range [1, 4096]"
+                  jobs=$2 ;;
+          --partition) partition=$2 ;;
+          --account) account=$2 ;;
+          --time) [[ $2 =~ ^[0-9:-]+$ ]] || die "--time: '$2' is not a Slurm time limit (e.g. 30, 01:00:00, 1-00:00:00)"
+                  time_limit=$2 ;;
+          --array-width) [[ $2 =~ ^[0-9]+$ ]] && (($2 >= 1)) || die "--array-width: '$2' is not a count >= 1"
+                         width=$2 ;;
+        esac
+        shift 2 ;;
+      *) die "unknown option '$1' (see the top of $script)" ;;
+    esac
+  done
+  if [[ -z $executor ]]; then
+    if command -v sbatch >/dev/null && sinfo -h >/dev/null 2>&1; then executor=slurm; else executor=local; fi
+  fi
+}
+
+# ---- one task --------------------------------------------------------------------------
+run_task() {  # run_task DIR ID
+  local dir=$1 id=$2 line group kind args
+  line=$(awk -F'\t' -v id="$id" '$1 == id' "$dir/tasks.tsv")
+  [[ -n $line ]] || die "task $id is not in $dir/tasks.tsv"
+  IFS=$'\t' read -r _ group kind args <<<"$line"
+  local build_dir
+  build_dir=$(cat "$dir/build_dir")
+  local log="$dir/logs/task-$id.log" partial="$dir/partials/$id.json"
+  rm -f "$dir/status/$id.json" "$partial"
+  local started ended status=0
+  started=$(date +%s.%N)
+  # shellcheck disable=SC2086  # the arguments are words of our own task list
+  /usr/bin/time -f '%e %U %S' -o "$dir/status/$id.time" \
+    "$build_dir/testbench/specular_$kind" $args --partial "$partial" >>"$log" 2>&1 || status=$?
+  ended=$(date +%s.%N)
+  read -r wall user sys <"$dir/status/$id.time" 2>/dev/null || { wall=0 user=0 sys=0; }
+  printf '{"id": %s, "group": "%s", "exit": %d, "wall_seconds": %s, "cpu_seconds": %s, "started": %s, "ended": %s, "host": "%s", "log": "%s"}\n' \
+    "$id" "$group" "$status" "$wall" "$(awk -v u="$user" -v s="$sys" 'BEGIN {printf "%.2f", u + s}')" "$started" "$ended" "$(hostname)" "logs/task-$id.log" \
+    >"$dir/status/$id.json"
+  return "$status"
+}
+
+# ---- the merge -------------------------------------------------------------------------
+run_merge() {  # run_merge DIR
+  local dir=$1 build_dir failed=0 id group kind
+  build_dir=$(cat "$dir/build_dir")
+  mkdir -p "$dir/merged"
+  while IFS=$'\t' read -r id group kind _; do
+    if [[ ! -f $dir/status/$id.json ]]; then
+      echo "farm.sh merge: task $id ($group) did not finish (killed, cancelled or timed out?): see $dir/logs/task-$id.log" >&2
+      failed=1
+    elif ! grep -q '"exit": 0,' "$dir/status/$id.json"; then
+      echo "farm.sh merge: task $id ($group) failed ($(grep -o '"exit": [0-9]*' "$dir/status/$id.json")): see $dir/logs/task-$id.log" >&2
+      failed=1
+    fi
+  done <"$dir/tasks.tsv"
+  if ((failed)); then
+    echo "farm.sh merge: FAIL: not every task finished; 'scripts/farm.sh resubmit $dir' runs only those again" >&2
+    write_report "$dir" FAIL
+    return 1
+  fi
+  local verdict=PASS
+  for group in $(cut -f2 "$dir/tasks.tsv" | uniq); do
+    kind=$(awk -F'\t' -v g="$group" '$2 == g {print $3; exit}' "$dir/tasks.tsv")
+    local files=()
+    while read -r id; do files+=("$dir/partials/$id.json"); done < <(awk -F'\t' -v g="$group" '$2 == g {print $1}' "$dir/tasks.tsv")
+    local extra=()
+    [[ $kind == tb ]] && extra=(--partial "$dir/merged/$group.json")
+    if "$build_dir/testbench/specular_$kind" --merge "${files[@]}" "${extra[@]}" \
+        >"$dir/merged/$group.txt" 2>"$dir/merged/$group.err"; then
+      echo "farm.sh merge: $group: PASS" >&2
+    else
+      echo "farm.sh merge: $group: FAIL (exit $?): $dir/merged/$group.txt, $dir/merged/$group.err" >&2
+      cat "$dir/merged/$group.err" >&2
+      verdict=FAIL
+    fi
+  done
+  write_report "$dir" "$verdict"
+  [[ $verdict == PASS ]]
+}
+
+write_report() {  # write_report DIR VERDICT: report.json and report.md from status/*.json
+  local dir=$1 verdict=$2
+  date +%s.%N >"$dir/merged_at"
+  python3 - "$dir" "$verdict" <<'EOF'
+import json, os, sys
+d, verdict = sys.argv[1], sys.argv[2]
+tasks = []
+for line in open(os.path.join(d, "tasks.tsv")):
+    tid, group, kind, args = line.rstrip("\n").split("\t")
+    p = os.path.join(d, "status", tid + ".json")
+    st = json.load(open(p)) if os.path.exists(p) else {"exit": None, "wall_seconds": None, "cpu_seconds": None}
+    tasks.append({"id": int(tid), "group": group, "command": "specular_%s %s" % (kind, args),
+                  "exit": st.get("exit"), "wall_seconds": st.get("wall_seconds"),
+                  "cpu_seconds": st.get("cpu_seconds"), "host": st.get("host"),
+                  "log": "logs/task-%s.log" % tid})
+submitted = float(open(os.path.join(d, "submitted_at")).read())
+merged = float(open(os.path.join(d, "merged_at")).read())
+done = [t for t in tasks if t["exit"] == 0]
+report = {"regression": open(os.path.join(d, "regression")).read().strip(),
+          "executor": open(os.path.join(d, "executor")).read().strip(),
+          "verdict": verdict, "tasks": tasks,
+          "total_cpu_seconds": round(sum(t["cpu_seconds"] or 0 for t in tasks), 2),
+          "total_task_wall_seconds": round(sum(t["wall_seconds"] or 0 for t in tasks), 2),
+          "wall_submit_to_merge_seconds": round(merged - submitted, 2),
+          "tasks_finished": len(done), "tasks_total": len(tasks)}
+json.dump(report, open(os.path.join(d, "report.json"), "w"), indent=2)
+with open(os.path.join(d, "report.md"), "w") as f:
+    f.write("# Regression %s: %s\n\n" % (report["regression"], verdict))
+    f.write("Executor %s; %d of %d tasks finished; total CPU %.1f s; wall from submit to merge %.1f s.\n\n"
+            % (report["executor"], len(done), len(tasks), report["total_cpu_seconds"], report["wall_submit_to_merge_seconds"]))
+    f.write("| task | group | exit | wall s | CPU s | command | log |\n|---:|---|---:|---:|---:|---|---|\n")
+    for t in tasks:
+        f.write("| %d | %s | %s | %s | %s | `%s` | %s |\n" % (t["id"], t["group"], t["exit"], t["wall_seconds"],
+                t["cpu_seconds"], t["command"], t["log"]))
+    merged_dir = os.path.join(d, "merged")
+    if os.path.isdir(merged_dir):
+        f.write("\n## Merged results\n")
+        for name in sorted(os.listdir(merged_dir)):
+            if name.endswith(".txt"):
+                f.write("\n### %s\n\n```\n%s```\n" % (name[:-4], open(os.path.join(merged_dir, name)).read()))
+EOF
+}
+
+# ---- submission --------------------------------------------------------------------------
+launch() {  # launch DIR IDS... : run the tasks IDS and then the merge
+  local dir=$1
+  shift
+  local ids=("$@")
+  date +%s.%N >"$dir/submitted_at"
+  echo "$executor" >"$dir/executor"
+  if [[ $executor == local ]]; then
+    echo "farm.sh: ${#ids[@]} task(s) on this machine, $jobs at a time; logs in $dir/logs" >&2
+    printf '%s\n' "${ids[@]}" | xargs -P "$jobs" -I{} "$script" task "$dir" {} || true
+    run_merge "$dir"
+    return
+  fi
+  command -v sbatch >/dev/null || die "--executor slurm: sbatch not found (install slurm-wlm or use --executor local)"
+  local common=(--parsable --time="$time_limit")
+  [[ -n $partition ]] && common+=(--partition="$partition")
+  [[ -n $account ]] && common+=(--account="$account")
+  local array
+  array=$(IFS=,; echo "${ids[*]}")
+  [[ -n $width ]] && array+="%$width"
+  local array_job merge_job
+  array_job=$(sbatch "${common[@]}" --job-name="farm-$(cat "$dir/regression")" --cpus-per-task=1 \
+    --array="$array" --output="$dir/logs/slurm-%a.log" --chdir="$dir" \
+    --wrap="'$script' task '$dir' \$SLURM_ARRAY_TASK_ID")
+  # afterok: the merge runs only when every task succeeded; a failed or killed task
+  # cancels it (--kill-on-invalid-dep), and 'farm.sh wait' then names the task.
+  merge_job=$(sbatch "${common[@]}" --job-name="farm-merge" --dependency="afterok:${array_job%%;*}" \
+    --kill-on-invalid-dep=yes --output="$dir/logs/merge.log" --chdir="$dir" \
+    --wrap="'$script' merge '$dir'")
+  echo "array ${array_job%%;*} merge ${merge_job%%;*}" >>"$dir/jobs.txt"
+  echo "farm.sh: submitted array job ${array_job%%;*} (${#ids[@]} tasks) and merge job ${merge_job%%;*}; 'scripts/farm.sh wait $dir'" >&2
+}
+
+wait_for() {  # wait_for DIR: until the last merge job left the queue; its verdict
+  local dir=$1 merge_job state
+  merge_job=$(tail -n1 "$dir/jobs.txt" | awk '{print $4}')
+  while squeue -h -j "$merge_job" 2>/dev/null | grep -q .; do sleep 2; done
+  state=$(sacct -n -X -j "$merge_job" -o State 2>/dev/null | head -n1 | tr -d ' ' || true)
+  if [[ -f $dir/merged_at && $(stat -c %Y "$dir/merged_at") -ge $(stat -c %Y "$dir/jobs.txt") ]]; then
+    cat "$dir/logs/merge.log" >&2 || true
+    grep -q '"verdict": "PASS"' "$dir/report.json"
+    return
+  fi
+  echo "farm.sh wait: merge job $merge_job did not run (${state:-gone}: a task failed or was killed)" >&2
+  run_merge "$dir"
+}
+
+command=${1:-}
+case "$command" in
+  submit)
+    (($# >= 2)) || die "usage: farm.sh submit REGRESSION [options]"
+    regression=$2
+    [[ $regression == smoke || $regression == full ]] || die "unknown regression '$regression' (allowed: smoke, full)"
+    shift 2
+    parse_options "$@"
+    [[ -x $build/testbench/specular_tb && -x $build/testbench/specular_prove ]] ||
+      die "no specular_tb and specular_prove in $build/testbench (build them, or give --build DIR)"
+    tasks=$(regression_tasks "$regression")
+    [[ -n $out_dir ]] || out_dir="$PWD/farm-$regression-$(date -u +%Y%m%dT%H%M%SZ)"
+    [[ ! -e $out_dir || -z $(ls -A "$out_dir") ]] || die "--out: '$out_dir' exists and is not empty"
+    mkdir -p "$out_dir"/{logs,status,partials}
+    out_dir=$(cd "$out_dir" && pwd)
+    printf '%s\n' "$tasks" >"$out_dir/tasks.tsv"
+    echo "$regression" >"$out_dir/regression"
+    echo "$build" >"$out_dir/build_dir"
+    mapfile -t ids < <(cut -f1 "$out_dir/tasks.tsv")
+    echo "farm.sh: regression $regression, ${#ids[@]} tasks, folder $out_dir" >&2
+    launch "$out_dir" "${ids[@]}"
+    ;;
+  resubmit)
+    (($# >= 2)) || die "usage: farm.sh resubmit DIR [options]"
+    run_dir=$(cd "$2" && pwd) || die "resubmit: no folder '$2'"
+    shift 2
+    parse_options "$@"
+    out_dir=$run_dir
+    ids=()
+    while IFS=$'\t' read -r id _; do
+      grep -qs '"exit": 0,' "$out_dir/status/$id.json" || ids+=("$id")
+    done <"$out_dir/tasks.tsv"
+    ((${#ids[@]})) || { echo "farm.sh resubmit: every task finished; merging" >&2; executor=local; run_merge "$out_dir"; exit; }
+    echo "farm.sh resubmit: task(s) ${ids[*]} again" >&2
+    for id in "${ids[@]}"; do mv -f "$out_dir/logs/task-$id.log" "$out_dir/logs/task-$id.log.failed" 2>/dev/null || true; done
+    rm -f "$out_dir/merged_at"
+    launch "$out_dir" "${ids[@]}"
+    ;;
+  task) (($# == 3)) || die "usage: farm.sh task DIR ID"; run_task "$2" "$3" ;;
+  merge) (($# == 2)) || die "usage: farm.sh merge DIR"; run_merge "$2" ;;
+  wait) (($# == 2)) || die "usage: farm.sh wait DIR"; wait_for "$(cd "$2" && pwd)" ;;
+  list) (($# == 2)) || die "usage: farm.sh list REGRESSION"; build="$root/build"; regression_tasks "$2" ;;
+  -h|--help|"") sed -n '2,26p' "$script" | sed 's/^# \{0,1\}//' ;;
+  *) die "unknown command '$command' (allowed: submit, resubmit, wait, task, merge, list)" ;;
+esac

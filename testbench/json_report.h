@@ -1,0 +1,33 @@
+// The JSON objects specular_tb's report (--format json and jsonl: settings, summary)
+// and the partial results of sharded runs (partial.h) share, written and read with
+// nlohmann-json. The report's rows stay on issue 27's buffered writer (report.cpp).
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include "report.h"
+#include "scoreboard.h"
+
+namespace specular {
+namespace tb {
+
+/// Keys keep the order they are written in (the report reads top to bottom).
+using Json = nlohmann::ordered_json;
+
+/// One line of JSON; bytes that are not UTF-8 (a file name) become U+FFFD.
+std::string dump_json(const Json& json);
+
+/// The report's "settings" object.
+Json settings_json(const RunDescription& run);
+/// The report's "summary" object. `places` adds what a merge needs and a report does
+/// not show: each maximum's operation index ("at") and the results' checksum.
+Json summary_json(const Summary& summary, bool places = false);
+/// The inverse of summary_json(summary, true); throws std::exception (nlohmann's
+/// type or out-of-range errors) on a malformed object.
+Summary summary_from_json(const Json& json);
+
+}  // namespace tb
+}  // namespace specular

@@ -1,0 +1,307 @@
+#include "partial.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <utility>
+
+#include "git_commit.h"  // generated at build time (testbench/CMakeLists.txt)
+#include "output_file.h"
+#include "run_models.h"
+#include "usage_error.h"
+
+namespace specular {
+namespace tb {
+
+const char* build_commit() { return SPECULAR_GIT_COMMIT; }
+
+namespace {
+
+/// Every width of Widths by its set_width name.
+const std::vector<std::pair<const char*, int Widths::*>>& width_members() {
+  static const std::vector<std::pair<const char*, int Widths::*>> members = {
+      {"cos_frac_bits", &Widths::cos_frac_bits},     {"n_bits", &Widths::n_bits},
+      {"rgb_bits", &Widths::rgb_bits},               {"pin19_frac_bits", &Widths::pin19_frac_bits},
+      {"rom5_addr_bits", &Widths::rom5_addr_bits},   {"rom5_word_bits", &Widths::rom5_word_bits},
+      {"reg9_int_bits", &Widths::reg9_int_bits},     {"reg9_frac_bits", &Widths::reg9_frac_bits},
+      {"rom38_int_bits", &Widths::rom38_int_bits},   {"rom38_frac_bits", &Widths::rom38_frac_bits},
+      {"norm_int_bits", &Widths::norm_int_bits},     {"norm_frac_bits", &Widths::norm_frac_bits},
+      {"out_int_bits", &Widths::out_int_bits},       {"out_frac_bits", &Widths::out_frac_bits}};
+  return members;
+}
+
+std::string hex64(std::uint64_t value) {
+  char text[24];
+  std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+std::string host_name() {
+  char name[256] = {};
+  if (gethostname(name, sizeof name - 1) != 0) return "unknown";
+  return name;
+}
+
+}  // namespace
+
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+Json partial_settings(const RunDescription& whole, const std::array<long long, 3>& rgb,
+                      std::uint64_t input_checksum) {
+  Json s;
+  s["model"] = whole.model;
+  s["stimulus"] = whole.stimulus;
+  s["normalisation"] = to_string(whole.config.normalisation);
+  s["saturation"] = to_string(whole.config.saturation);
+  s["constants"] = to_string(whole.config.constants);
+  s["clock_period_ps"] = whole.clock_period_ps;
+  s["operations"] = whole.operations;
+  s["text_rows"] = whole.text_rows;
+  Json widths;
+  for (const auto& [name, member] : width_members()) widths[name] = whole.config.widths.*member;
+  s["widths"] = widths;
+  s["rgb"] = rgb;
+  s["input_checksum"] = hex64(input_checksum);
+  return s;
+}
+
+Json partial_json(const Json& settings, const Shard& shard, const Summary& summary,
+                  const ShardTiming& timing) {
+  Json j;
+  j["kind"] = partial_kind;
+  j["version"] = partial_version;
+  j["commit"] = build_commit();
+  j["settings"] = settings;
+  j["shard"] = Json{{"index", shard.index}, {"count", shard.count}};
+  j["summary"] = summary_json(summary, true);
+  j["timing"] = Json{{"wall_seconds", timing.wall_seconds},
+                     {"cpu_seconds", timing.cpu_seconds},
+                     {"host", host_name()}};
+  return j;
+}
+
+namespace {
+
+PartialFile read_partial(const std::string& path, const std::string& kind, bool tb_summary) {
+  std::ifstream in(path);
+  if (!in) throw UsageError("--merge: cannot read '" + path + "'");
+  PartialFile p;
+  p.path = path;
+  try {
+    p.json = Json::parse(in);
+  } catch (const std::exception& e) {
+    throw UsageError("--merge: '" + path + "' is not JSON: " + e.what());
+  }
+  try {
+    if (!p.json.is_object() || p.json.value("kind", "") != kind)
+      throw UsageError("--merge: '" + path + "' is not a " + kind + " (its kind: " +
+                       (p.json.is_object() && p.json.contains("kind") ? dump_json(p.json["kind"]) : "none") + ")");
+    if (p.json.at("version").get<int>() != partial_version)
+      throw UsageError("--merge: '" + path + "' is a version " + p.json.at("version").dump() +
+                       " partial; this specular_tb reads version " + std::to_string(partial_version));
+    p.shard.index = p.json.at("shard").at("index").get<std::size_t>();
+    p.shard.count = p.json.at("shard").at("count").get<std::size_t>();
+    if (p.shard.count < 1 || p.shard.index >= p.shard.count)
+      throw UsageError("--merge: '" + path + "' names shard " + p.shard.text() + ", not I/N with I < N");
+    p.json.at("settings");
+    p.json.at("commit").get<std::string>();
+    if (tb_summary) p.summary = summary_from_json(p.json.at("summary"));
+    else p.json.at("summary");
+  } catch (const UsageError&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw UsageError("--merge: '" + path + "' is not a complete partial result: " + e.what());
+  }
+  return p;
+}
+
+/// The first key whose value differs, as "key: a vs b".
+std::string first_difference(const Json& a, const Json& b) {
+  for (const auto& [key, value] : a.items())
+    if (!b.contains(key) || b.at(key) != value)
+      return key + " " + dump_json(value) + " vs " + (b.contains(key) ? dump_json(b.at(key)) : "(none)");
+  for (const auto& [key, value] : b.items())
+    if (!a.contains(key)) return key + " (none) vs " + dump_json(value);
+  return "?";
+}
+
+/// Equal as JSON values, whatever the order of the keys (a file rewritten by another
+/// tool may sort them).
+bool same_content(const Json& a, const Json& b) {
+  return nlohmann::json::parse(dump_json(a)) == nlohmann::json::parse(dump_json(b));
+}
+
+void merge_worst(Worst& into, const Worst& w, bool first) {
+  // The unsharded run keeps the first operation with the largest error: the largest
+  // error, and among equal errors the smallest index.
+  if (first || w.error > into.error || (w.error == into.error && w.at < into.at)) {
+    const double tolerance_used = std::max(into.tolerance_used, w.tolerance_used);
+    into = w;
+    into.tolerance_used = tolerance_used;
+  } else {
+    into.tolerance_used = std::max(into.tolerance_used, w.tolerance_used);
+  }
+}
+
+RunDescription description_from_settings(const Json& s) {
+  RunDescription run;
+  run.model = s.at("model").get<std::string>();
+  run.stimulus = s.at("stimulus").get<std::string>();
+  run.config.normalisation = parse_normalisation(s.at("normalisation").get<std::string>());
+  run.config.saturation = parse_saturation(s.at("saturation").get<std::string>());
+  run.config.constants = parse_constants(s.at("constants").get<std::string>());
+  for (const auto& [name, member] : width_members())
+    run.config.widths.*member = s.at("widths").at(name).get<int>();
+  run.clock_period_ps = s.at("clock_period_ps").get<std::uint64_t>();
+  run.operations = s.at("operations").get<std::size_t>();
+  run.text_rows = false;  // a merge has no rows: the summary only
+  return run;
+}
+
+}  // namespace
+
+std::vector<PartialFile> read_complete_set(const std::vector<std::string>& files,
+                                          const std::string& kind, bool tb_summary) {
+  if (files.empty()) throw UsageError("--merge needs the partial files of every shard (FILE...)");
+  std::vector<PartialFile> parts;
+  for (const std::string& f : files) parts.push_back(read_partial(f, kind, tb_summary));
+  const PartialFile& first = parts.front();
+  const std::size_t count = first.shard.count;
+  std::vector<const PartialFile*> by_index(count, nullptr);
+  for (const PartialFile& p : parts) {
+    if (p.json.at("commit") != first.json.at("commit"))
+      throw UsageError("--merge: '" + p.path + "' comes from commit " + p.json.at("commit").get<std::string>() +
+                       ", '" + first.path + "' from " + first.json.at("commit").get<std::string>() +
+                       ": shards of one run come from one build");
+    if (!same_content(p.json.at("settings"), first.json.at("settings")))
+      throw UsageError("--merge: '" + p.path + "' has other settings than '" + first.path +
+                       "' (" + first_difference(p.json.at("settings"), first.json.at("settings")) + ")");
+    if (p.shard.count != count)
+      throw UsageError("--merge: '" + p.path + "' is shard " + p.shard.text() + " of " +
+                       std::to_string(p.shard.count) + ", '" + first.path + "' one of " +
+                       std::to_string(count) + " shards");
+    if (by_index[p.shard.index] != nullptr)
+      throw UsageError("--merge: shard " + p.shard.text() + " is given twice: '" +
+                       by_index[p.shard.index]->path + "' and '" + p.path + "'");
+    by_index[p.shard.index] = &p;
+  }
+  std::string missing;
+  std::size_t missing_count = 0;
+  for (std::size_t i = 0; i < count; ++i)
+    if (by_index[i] == nullptr) {
+      if (++missing_count <= 10) missing += (missing.empty() ? "" : ", ") + Shard{i, count}.text();
+    }
+  if (missing_count > 0)
+    throw UsageError("--merge: " + std::to_string(missing_count) + " of " + std::to_string(count) +
+                     " shards missing: " + missing + (missing_count > 10 ? ", ..." : ""));
+
+  std::vector<PartialFile> ordered;
+  for (const PartialFile* p : by_index) ordered.push_back(*p);
+  return ordered;
+}
+
+int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  std::vector<std::string> files;
+  OutputFormat format = OutputFormat::text;
+  std::string output_path, partial_path;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--format" || a == "--output" || a == "--partial") {
+      if (i + 1 >= args.size()) throw UsageError("--merge: option " + a + " needs a value");
+      const std::string& value = args[++i];
+      if (a == "--format") format = parse_output_format(value);
+      else if (value.empty()) throw UsageError("--merge: " + a + ": the file name is empty");
+      else if (a == "--output") output_path = value;
+      else partial_path = value;
+    } else if (a.rfind("--", 0) == 0) {
+      throw UsageError("--merge: unknown option '" + a +
+                       "' (allowed: --format text|json, --output FILE, --partial FILE)");
+    } else {
+      files.push_back(a);
+    }
+  }
+  if (files.empty()) throw UsageError("--merge needs the partial files of every shard (FILE...)");
+  if (format == OutputFormat::csv)
+    throw UsageError("--merge: --format csv is not available (a merge has no rows): text or json");
+
+  const std::vector<PartialFile> parts = read_complete_set(files, partial_kind, true);
+  const PartialFile& first = parts.front();
+  const std::size_t count = first.shard.count;
+  std::vector<const PartialFile*> by_index;
+  for (const PartialFile& p : parts) by_index.push_back(&p);
+  const Json& settings = first.json.at("settings");
+  RunDescription run;
+  try {
+    run = description_from_settings(settings);
+  } catch (const std::exception& e) {
+    throw UsageError("--merge: '" + first.path + "' has unreadable settings: " + e.what());
+  }
+
+  Summary total;
+  ShardTiming timing;  // summed CPU; wall: the longest shard
+  Json shards = Json::array();
+  bool any = false;
+  for (const PartialFile* p : by_index) {
+    const Summary& s = p->summary;
+    total.count += s.count;
+    total.failures += s.failures;
+    total.approx_failures += s.approx_failures;
+    total.norm_failures += s.norm_failures;
+    total.out_failures += s.out_failures;
+    total.cycles_failures += s.cycles_failures;
+    total.checksum += s.checksum;
+    const Json& t = p->json.at("timing");
+    timing.cpu_seconds += t.value("cpu_seconds", 0.0);
+    timing.wall_seconds = std::max(timing.wall_seconds, t.value("wall_seconds", 0.0));
+    shards.push_back(Json{{"index", p->shard.index}, {"file", p->path}, {"operations", s.count},
+                          {"timing", t}});
+    if (s.count == 0) continue;
+    merge_worst(total.approx, s.approx, !any);
+    merge_worst(total.norm, s.norm, !any);
+    merge_worst(total.norm_exact, s.norm_exact, !any);
+    merge_worst(total.out, s.out, !any);
+    total.cycles_min = any ? std::min(total.cycles_min, s.cycles_min) : s.cycles_min;
+    total.cycles_max = any ? std::max(total.cycles_max, s.cycles_max) : s.cycles_max;
+    any = true;
+  }
+  if (total.count != run.operations)
+    throw UsageError("--merge: the shards hold " + std::to_string(total.count) +
+                     " computations, the run has " + std::to_string(run.operations) +
+                     " (a shard was cut short?)");
+
+  std::optional<AtomicOutputStream> output_file;
+  if (!output_path.empty()) output_file.emplace(output_path, "--output");
+  std::optional<AtomicOutputStream> partial_file;
+  if (!partial_path.empty()) partial_file.emplace(partial_path, "--partial");
+  std::ostream& report_stream = output_file ? output_file->stream() : out;
+  const std::unique_ptr<Report> report = make_report(format, report_stream, err);
+  report->begin(run);
+  report->end(total, -1);  // no run time: the text stays reproducible
+  if (partial_file) {
+    Json merged = partial_json(settings, Shard{}, total, timing);
+    merged["commit"] = first.json.at("commit");
+    merged["timing"]["wall_seconds_longest_shard"] = timing.wall_seconds;
+    merged["merged_from"] = shards;
+    partial_file->stream() << merged.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+    partial_file->commit();
+  }
+  report_stream.flush();
+  if (!report_stream) throw UsageError("cannot write the report (disk full?)");
+  if (output_file) output_file->commit();
+  err << "specular_tb --merge: " << count << " shard(s), " << total.count
+      << " computation(s), results checksum " << summary_json(total, true).at("checksum").get<std::string>()
+      << ", CPU " << timing.cpu_seconds << " s in all\n";
+  return total.pass() ? 0 : 1;
+}
+
+}  // namespace tb
+}  // namespace specular

@@ -1,0 +1,105 @@
+#!/usr/bin/env bash
+# The farm through real Slurm (issue 25; ctest label "farm"): starts a single-node
+# cluster (scripts/slurm_cluster.sh) in a scratch folder, submits the smoke regression
+# with sbatch (scripts/farm.sh), and checks
+#   1. every merged result equals the unsharded run's, bit for bit: specular_prove's
+#      report whole; specular_tb's summary text and its partial's summary (every maximum,
+#      its place, the counts, the results' checksum);
+#   2. a task killed on purpose (scancel of one array task) makes the merge fail, naming
+#      the task and its log; resubmitting only that task completes the run.
+# Skips (exit 77) without root or without the slurm-wlm and munge packages.
+# With "local", the same checks through the local executor (no Slurm needed): the
+# "killed" task is one whose status and partial are removed after the run, as a task
+# killed before it wrote them leaves it.
+# Usage: farm_test.sh BUILD_DIR [slurm|local]
+set -euo pipefail
+build=$(cd "$1" && pwd)
+executor=${2:-slurm}
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+farm="$root/scripts/farm.sh"
+cluster="$root/scripts/slurm_cluster.sh"
+
+if [[ $executor == slurm ]] && { ((EUID != 0)) || [[ ! -x /usr/sbin/slurmctld || ! -x /usr/sbin/munged ]]; }; then
+  echo "farm_test.sh: SKIP: needs root and the packages slurm-wlm and munge (scripts/setup.sh)"
+  exit 77
+fi
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/farm_test.XXXXXX")
+chmod 755 "$scratch"  # user munge must reach the cluster's folder
+cleanup() {
+  local status=$?
+  if [[ $executor == slurm ]]; then "$cluster" stop "$scratch/cluster" || status=1; fi
+  if ((status == 0)); then rm -rf "$scratch"; else echo "farm_test.sh: evidence kept in $scratch" >&2; fi
+  exit "$status"
+}
+trap cleanup EXIT
+fail() { echo "farm_test.sh: FAIL: $*" >&2; exit 1; }
+
+if [[ $executor == slurm ]]; then
+  "$cluster" start "$scratch/cluster"
+  export SLURM_CONF="$scratch/cluster/etc/slurm.conf"
+  run_options=(--executor slurm --time 10)
+else
+  run_options=(--executor local --jobs 2)
+fi
+
+# The unsharded reference of every group of the smoke regression.
+mkdir -p "$scratch/ref"
+while IFS=$'\t' read -r group kind args; do
+  "$build/testbench/specular_$kind" $args --partial "$scratch/ref/$group.json" >"$scratch/ref/$group.txt" ||
+    fail "unsharded $group failed"
+done < <("$farm" list smoke | awk -F'\t' '!seen[$2]++ {sub(/ --shard [0-9]+\/[0-9]+$/, "", $4); print $2 "\t" $3 "\t" $4}')
+
+summary_block() { sed -n '/^summary:/,$p' "$1" | grep -v '^  run time '; }
+check_merged() {  # check_merged RUN_DIR
+  local dir=$1 group
+  for ref in "$scratch"/ref/*.txt; do
+    group=$(basename "$ref" .txt)
+    [[ -f $dir/merged/$group.txt ]] || fail "no merged result of $group in $dir/merged"
+    if [[ $group == prove_* ]]; then
+      cmp "$ref" "$dir/merged/$group.txt" || fail "$group: merged report differs from the unsharded one"
+    else
+      diff <(summary_block "$ref") <(summary_block "$dir/merged/$group.txt") || fail "$group: merged summary differs"
+      cmp <(jq -S .summary "$scratch/ref/$group.json") <(jq -S .summary "$dir/merged/$group.json") ||
+        fail "$group: merged partial summary (maxima, places, checksum) differs"
+      cmp <(jq -S '.settings, .commit' "$scratch/ref/$group.json") <(jq -S '.settings, .commit' "$dir/merged/$group.json") ||
+        fail "$group: merged settings or commit differ"
+    fi
+    echo "farm_test.sh: $group: merged == unsharded"
+  done
+}
+
+# 1. The smoke regression, two tasks at a time.
+if [[ $executor == slurm ]]; then
+  "$farm" submit smoke "${run_options[@]}" --array-width 2 --out "$scratch/run1"
+  "$farm" wait "$scratch/run1" || fail "the smoke regression failed (see $scratch/run1)"
+else
+  "$farm" submit smoke "${run_options[@]}" --out "$scratch/run1" || fail "the smoke regression failed (see $scratch/run1)"
+fi
+check_merged "$scratch/run1"
+jq -e '.verdict == "PASS" and .tasks_finished == .tasks_total and .total_cpu_seconds > 0' "$scratch/run1/report.json" >/dev/null ||
+  fail "report.json does not say PASS with every task and their CPU time"
+
+# 2. The last task cancelled before it runs (one array task at a time): the merge fails
+#    naming it and its log; resubmitting runs only that task, then merges to PASS.
+last=$(tail -n1 "$scratch/run1/tasks.tsv" | cut -f1)
+if [[ $executor == slurm ]]; then
+  "$farm" submit smoke "${run_options[@]}" --array-width 1 --out "$scratch/run2"
+  array_job=$(awk '{print $2}' "$scratch/run2/jobs.txt")
+  scancel "${array_job}_${last}"
+  if "$farm" wait "$scratch/run2" 2>"$scratch/run2.err"; then fail "the merge passed with task $last killed"; fi
+else
+  cp -r "$scratch/run1" "$scratch/run2"
+  rm -r "$scratch/run2/merged" "$scratch/run2/status/$last.json" "$scratch/run2/partials/$last.json"
+  if "$farm" merge "$scratch/run2" 2>"$scratch/run2.err"; then fail "the merge passed with task $last killed"; fi
+fi
+cat "$scratch/run2.err"
+grep -q "task $last (.*) did not finish.*logs/task-$last.log" "$scratch/run2.err" ||
+  fail "the merge's message does not name task $last and its log"
+jq -e '.verdict == "FAIL"' "$scratch/run2/report.json" >/dev/null || fail "report.json does not say FAIL"
+"$farm" resubmit "$scratch/run2" "${run_options[@]}" 2>"$scratch/resubmit.err" || [[ $executor == slurm ]] ||
+  fail "the resubmitted run failed"
+cat "$scratch/resubmit.err"
+grep -q "task(s) $last again" "$scratch/resubmit.err" || fail "resubmit did not run exactly task $last"
+if [[ $executor == slurm ]]; then "$farm" wait "$scratch/run2" || fail "the resubmitted run failed"; fi
+check_merged "$scratch/run2"
+echo "farm_test.sh: PASS"

@@ -17,6 +17,7 @@
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_cycle_model.h"
 #include "rom_loader.h"
+#include "thread_context_guard.h"
 
 namespace specular {
 
@@ -61,7 +62,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
     done35_ = top_.pin35_done;
   }
   ~VerilatedEngine() override {
-    ::Verilated::threadContextp(&context_);  // the scopes unregister there (rtl_sync_engine.h)
+    context_guard_.enter();  // the scopes unregister there (thread_context_guard.h)
     top_.final();
   }
   bool fixed() const override { return IsFixed; }
@@ -161,6 +162,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
 
   Formats formats_;
   VerilatedContext context_;
+  ThreadContextGuard context_guard_{context_};  // between the two: see there
   Model top_;
   std::uint64_t quarter_ = 0;
   bool select36_ = false;

@@ -20,6 +20,7 @@
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_device_base.h"
 #include "rom_loader.h"
+#include "thread_context_guard.h"
 #include "verilated_clock.h"
 
 namespace specular {
@@ -85,6 +86,7 @@ struct RtlModel final : RtlDeviceBase::Verilated {
   struct Outputs {
     std::uint64_t pin24, pin25, pin26, reg9, reg1, rom38, norm, done35, select36;
   };
+  ThreadContextGuard context_guard{context};  // before the model: see there
   Top top{&context};
   std::unique_ptr<Writer> writer;
   Outputs outputs{};
@@ -102,7 +104,7 @@ struct RtlModel final : RtlDeviceBase::Verilated {
   }
   ~RtlModel() override {
     writer.reset();  // the writer goes before the model it traces
-    ::Verilated::threadContextp(&context);  // its scopes unregister there (rtl_sync_engine.h)
+    context_guard.enter();  // its scopes unregister there (thread_context_guard.h)
   }
 
   static std::unique_ptr<RtlDeviceBase::Verilated> make(const Config& config) {

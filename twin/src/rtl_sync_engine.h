@@ -18,6 +18,7 @@
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_sync_cycle_model.h"
 #include "rom_loader.h"
+#include "thread_context_guard.h"
 #include "verilated_clock.h"
 
 namespace specular {
@@ -68,8 +69,8 @@ class SyncEngine final : public RtlSyncCycleModel::Engine {
   ~SyncEngine() override {
     // The model's scopes unregister from the thread's current context when destroyed
     // (Verilator 5.006, VerilatedScope::~VerilatedScope): make it this model's, not that
-    // of another model made later and perhaps destroyed already.
-    Verilated::threadContextp(&context_);
+    // of another model made later and perhaps destroyed already (thread_context_guard.h).
+    context_guard_.enter();
     top_.final();
   }
 
@@ -176,6 +177,7 @@ class SyncEngine final : public RtlSyncCycleModel::Engine {
 
   Formats formats_;
   VerilatedContext context_;
+  ThreadContextGuard context_guard_{context_};  // between the two: see there
   Top top_;
   std::uint64_t edges_ = 0;
   bool loaded_ = false;

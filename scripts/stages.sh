@@ -6,8 +6,11 @@
 # shellcheck shell=bash
 
 SPECULAR_STAGES=()
+# The first script that sources this sets the origin of the total (.ci/run's total
+# includes setup; scripts/test.sh run alone counts from its own start).
 SPECULAR_STAGES_START=${SPECULAR_STAGES_START:-$(date +%s)}
-export SPECULAR_STAGES_START
+SPECULAR_STAGES_ORIGIN=${SPECULAR_STAGES_ORIGIN:-$(basename "$(dirname "$0")")/$(basename "$0")}
+export SPECULAR_STAGES_START SPECULAR_STAGES_ORIGIN
 
 minutes() { awk -v s="$1" 'BEGIN { printf "%.1f", s / 60 }'; }
 
@@ -32,5 +35,6 @@ print_stages() {
   echo "=== stage times ($1)"
   local line
   for line in "${SPECULAR_STAGES[@]}"; do echo "    $line"; done
-  printf '    %-22s %5d s  %5s min (since %s started)\n' total "$total" "$(minutes "$total")" "$1"
+  printf '    %-22s %5d s  %5s min (since %s started)\n' total "$total" "$(minutes "$total")" \
+    "$SPECULAR_STAGES_ORIGIN"
 }

@@ -21,19 +21,6 @@ const char* build_commit() { return SPECULAR_GIT_COMMIT; }
 
 namespace {
 
-/// Every width of Widths by its set_width name.
-const std::vector<std::pair<const char*, int Widths::*>>& width_members() {
-  static const std::vector<std::pair<const char*, int Widths::*>> members = {
-      {"cos_frac_bits", &Widths::cos_frac_bits},     {"n_bits", &Widths::n_bits},
-      {"rgb_bits", &Widths::rgb_bits},               {"pin19_frac_bits", &Widths::pin19_frac_bits},
-      {"rom5_addr_bits", &Widths::rom5_addr_bits},   {"rom5_word_bits", &Widths::rom5_word_bits},
-      {"reg9_int_bits", &Widths::reg9_int_bits},     {"reg9_frac_bits", &Widths::reg9_frac_bits},
-      {"rom38_int_bits", &Widths::rom38_int_bits},   {"rom38_frac_bits", &Widths::rom38_frac_bits},
-      {"norm_int_bits", &Widths::norm_int_bits},     {"norm_frac_bits", &Widths::norm_frac_bits},
-      {"out_int_bits", &Widths::out_int_bits},       {"out_frac_bits", &Widths::out_frac_bits}};
-  return members;
-}
-
 std::string hex64(std::uint64_t value) {
   char text[24];
   std::snprintf(text, sizeof text, "0x%016llx", static_cast<unsigned long long>(value));
@@ -67,7 +54,7 @@ Json partial_settings(const RunDescription& whole, const std::array<long long, 3
   s["operations"] = whole.operations;
   s["text_rows"] = whole.text_rows;
   Json widths;
-  for (const auto& [name, member] : width_members()) widths[name] = whole.config.widths.*member;
+  for (const WidthField& field : width_fields()) widths[field.name] = whole.config.widths.*field.member;
   s["widths"] = widths;
   s["rgb"] = rgb;
   s["input_checksum"] = hex64(input_checksum);
@@ -159,8 +146,8 @@ RunDescription description_from_settings(const Json& s) {
   run.config.normalisation = parse_normalisation(s.at("normalisation").get<std::string>());
   run.config.saturation = parse_saturation(s.at("saturation").get<std::string>());
   run.config.constants = parse_constants(s.at("constants").get<std::string>());
-  for (const auto& [name, member] : width_members())
-    run.config.widths.*member = s.at("widths").at(name).get<int>();
+  for (const WidthField& field : width_fields())
+    run.config.widths.*field.member = s.at("widths").at(field.name).get<int>();
   run.clock_period_ps = s.at("clock_period_ps").get<std::uint64_t>();
   run.operations = s.at("operations").get<std::size_t>();
   run.text_rows = false;  // a merge has no rows: the summary only

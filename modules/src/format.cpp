@@ -89,30 +89,27 @@ void Widths::validate() const {
     throw std::invalid_argument("a bus is wider than the 63 bits a code can carry");
 }
 
-namespace {
-struct WidthField {
-  const char* name;
-  int Widths::*member;
-};
-constexpr WidthField width_fields[] = {
-    {"cos_frac_bits", &Widths::cos_frac_bits},     {"n_bits", &Widths::n_bits},
-    {"rgb_bits", &Widths::rgb_bits},               {"pin19_frac_bits", &Widths::pin19_frac_bits},
-    {"rom5_addr_bits", &Widths::rom5_addr_bits},   {"rom5_word_bits", &Widths::rom5_word_bits},
-    {"reg9_int_bits", &Widths::reg9_int_bits},     {"reg9_frac_bits", &Widths::reg9_frac_bits},
-    {"rom38_int_bits", &Widths::rom38_int_bits},   {"rom38_frac_bits", &Widths::rom38_frac_bits},
-    {"norm_int_bits", &Widths::norm_int_bits},     {"norm_frac_bits", &Widths::norm_frac_bits},
-    {"out_int_bits", &Widths::out_int_bits},       {"out_frac_bits", &Widths::out_frac_bits}};
-}  // namespace
+const std::vector<WidthField>& width_fields() {
+  static const std::vector<WidthField> fields = {
+      {"cos_frac_bits", &Widths::cos_frac_bits},     {"n_bits", &Widths::n_bits},
+      {"rgb_bits", &Widths::rgb_bits},               {"pin19_frac_bits", &Widths::pin19_frac_bits},
+      {"rom5_addr_bits", &Widths::rom5_addr_bits},   {"rom5_word_bits", &Widths::rom5_word_bits},
+      {"reg9_int_bits", &Widths::reg9_int_bits},     {"reg9_frac_bits", &Widths::reg9_frac_bits},
+      {"rom38_int_bits", &Widths::rom38_int_bits},   {"rom38_frac_bits", &Widths::rom38_frac_bits},
+      {"norm_int_bits", &Widths::norm_int_bits},     {"norm_frac_bits", &Widths::norm_frac_bits},
+      {"out_int_bits", &Widths::out_int_bits},       {"out_frac_bits", &Widths::out_frac_bits}};
+  return fields;
+}
 
 std::string width_names() {
   std::string names;
-  for (const WidthField& field : width_fields)
+  for (const WidthField& field : width_fields())
     names += names.empty() ? field.name : std::string(", ") + field.name;
   return names;
 }
 
 void set_width(Widths& widths, const std::string& name, int value) {
-  for (const WidthField& field : width_fields) {
+  for (const WidthField& field : width_fields()) {
     if (name == field.name) {
       widths.*field.member = value;
       return;

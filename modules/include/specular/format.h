@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace specular {
 
@@ -94,6 +95,12 @@ struct Widths {
 void set_width(Widths& widths, const std::string& name, int value);
 /// The names set_width accepts, comma-separated.
 std::string width_names();
+/// Every width of Widths with the name set_width() takes, in the order of Widths.
+struct WidthField {
+  const char* name;
+  int Widths::*member;
+};
+const std::vector<WidthField>& width_fields();
 
 /// Bus formats derived from Widths; computed once, read everywhere.
 struct Formats {

@@ -3,8 +3,9 @@
 // when standard error is a terminal and --quiet is not given, so logs, pipes and CI
 // output stay as they were (and not while rows are printed on the same terminal).
 // One implementation for every long run (library specular_progress): specular_tb, the
-// studies' stages (specular_study), the soak's stages (specular_soak) and, through the
-// specular_progress tool, the gate-level replays (scripts/gatesim.sh).
+// studies' stages (specular_study), the soak's stages (specular_soak), the proofs
+// (specular_prove, the farm's proof tasks) and, through the specular_progress tool, the
+// gate-level replays (scripts/gatesim.sh).
 #pragma once
 
 #include <chrono>

@@ -111,3 +111,27 @@ TEST(TbProgress, NoProgressWhenStandardErrorIsAFile) {
 }
 
 }  // namespace
+
+// specular_prove (the farm's proof tasks, issue 25) follows the same rule: no progress
+// line when standard error is a file, one on a terminal (script(1) gives the run one;
+// the proof of 8 193 000 operations takes over a second, the line is drawn every half
+// second), none with --quiet there.
+TEST(TbProgress, ProveFollowsTheSameRule) {
+  const std::string prove = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_prove";
+  const std::string arguments = " --model rtl-sync --device patent/clamp/patent --cos-stride 8";
+  const auto dir = scratch_dir();
+  const Outcome file = run_command("'" + prove + "'" + arguments, dir, "file");
+  EXPECT_EQ(file.status, 0) << file.err;
+  EXPECT_NE(file.out.find("8193000 operations"), std::string::npos) << file.out;
+  EXPECT_EQ(file.err.find('\r'), std::string::npos) << file.err;
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "script(1) not installed";
+  const Outcome terminal = run_command("script -qec \"'" + prove + "'" + arguments + "\" /dev/null",
+                                       dir, "terminal");
+  EXPECT_EQ(terminal.status, 0) << terminal.out;
+  EXPECT_NE(terminal.out.find("operations ("), std::string::npos) << terminal.out;
+  const Outcome quiet = run_command("script -qec \"'" + prove + "'" + arguments + " --quiet\" /dev/null",
+                                    dir, "quiet");
+  EXPECT_EQ(quiet.status, 0) << quiet.out;
+  EXPECT_NE(quiet.out.find("PASS"), std::string::npos) << quiet.out;
+  EXPECT_EQ(quiet.out.find("operations ("), std::string::npos) << quiet.out;
+}

@@ -18,6 +18,7 @@
 #include "output_file.h"
 #include "parse_values.h"
 #include "partial.h"
+#include "progress.h"
 #include "run_models.h"
 #include "scoreboard.h"
 #include "shard.h"
@@ -101,6 +102,18 @@ struct ProveOptions {
   code_t cos_stride = 1;          ///< every K-th cos code (tests: a quick proof); 1 = every one
   Shard shard;
   std::string partial_path;
+  bool quiet = false;  ///< no progress line even on a terminal
+};
+
+/// Operations checked so far over every device of the run, as the progress line of
+/// every long run (progress.h: on a terminal only, not with --quiet).
+struct ProofProgress {
+  Progress line;
+  std::uint64_t done = 0;
+  void add(std::size_t count) {
+    done += count;
+    line.update(done);
+  }
 };
 
 /// Operation index of (n, cos code) in the unsharded proof of one device.
@@ -142,7 +155,7 @@ class ProofOperands {
 /// Compares one batch with the core and adds it to `proof`.
 void check_batch(const Core& core, const std::vector<Operands>& batch, const std::vector<Result>& out,
                  const std::vector<double>& cycles, double periods, code_t stride, code_t per_n,
-                 DeviceProof& proof) {
+                 DeviceProof& proof, ProofProgress& progress) {
   for (std::size_t i = 0; i < batch.size(); ++i) {
     const std::size_t index = op_index(batch[i].n, batch[i].cos, stride, per_n);
     const std::string fields = differing_fields(out[i], core.run(batch[i]));
@@ -157,11 +170,13 @@ void check_batch(const Core& core, const std::vector<Operands>& batch, const std
     proof.checksum += result_hash(index, out[i], cycles[i]);
   }
   proof.operations += batch.size();
+  progress.add(batch.size());
 }
 
 #ifdef SPECULAR_HAS_RTL_TWIN
 template <class Twin>
-DeviceProof prove_twin(const Config& config, const ProveOptions& o, double periods) {
+DeviceProof prove_twin(const Config& config, const ProveOptions& o, double periods,
+                       ProofProgress& progress) {
   DeviceProof proof;
   proof.name = device_name(config);
   if (!core_builds(config)) {
@@ -181,13 +196,14 @@ DeviceProof prove_twin(const Config& config, const ProveOptions& o, double perio
   std::vector<Result> out;
   while (source.next(batch, 65537)) {
     twin.run_batch(batch, out);
-    check_batch(core, batch, out, twin.cycles(), periods, o.cos_stride, source.codes_per_n(), proof);
+    check_batch(core, batch, out, twin.cycles(), periods, o.cos_stride, source.codes_per_n(), proof,
+                progress);
   }
   return proof;
 }
 #endif
 
-DeviceProof prove_systemc(const Config& config, const ProveOptions& o) {
+DeviceProof prove_systemc(const Config& config, const ProveOptions& o, ProofProgress& progress) {
   DeviceProof proof;
   proof.name = device_name(config);
   if (!core_builds(config)) {
@@ -204,7 +220,8 @@ DeviceProof prove_systemc(const Config& config, const ProveOptions& o) {
       settings, [&](std::vector<Operands>& chunk, std::size_t max) { return source.next(chunk, max); },
       [&](const std::vector<Operands>& chunk, const std::vector<Result>& results,
           const std::vector<double>& cycles) {
-        check_batch(core, chunk, results, cycles, periods, o.cos_stride, source.codes_per_n(), proof);
+        check_batch(core, chunk, results, cycles, periods, o.cos_stride, source.codes_per_n(), proof,
+                    progress);
       });
   return proof;
 }
@@ -271,7 +288,7 @@ std::string help() {
          "against the bit-accurate core (issue 25).\n\n"
          "Usage:\n"
          "  specular_prove --model rtl|rtl-sync|pin|tlm [--device NAME|all] [--shard I/N]\n"
-         "                 [--partial FILE] [--cos-stride K]\n"
+         "                 [--partial FILE] [--cos-stride K] [--quiet]\n"
          "  specular_prove --merge FILE...\n\n"
          "  --model      rtl, rtl-sync: the verilated twins as C++ cycle models, every device\n"
          "               in one process; pin, tlm: SystemC, one device per process (--device)\n"
@@ -279,7 +296,8 @@ std::string help() {
          "               (default, rtl and rtl-sync only)\n"
          "  --shard I/N  the n with (n - 1) mod N = I (tests/support/operation_shard.h's split)\n"
          "  --partial    write this run's partial result (JSON) for --merge\n"
-         "  --cos-stride every K-th cos code (K in [1, 65536]; default 1 = every code)\n\n"
+         "  --cos-stride every K-th cos code (K in [1, 65536]; default 1 = every code)\n"
+         "  --quiet      no progress line (drawn on standard error only when it is a terminal)\n\n"
          "Exit status: 0 proved, 1 a difference, 2 bad usage or a refused merge, 3 internal.\n";
 }
 
@@ -326,6 +344,10 @@ int run_prove(const std::vector<std::string>& args, std::ostream& out, std::ostr
       out << help();
       return 0;
     }
+    if (a == "--quiet") {
+      o.quiet = true;
+      continue;
+    }
     if (a != "--model" && a != "--device" && a != "--shard" && a != "--partial" && a != "--cos-stride")
       throw UsageError("unknown option '" + a + "' (see --help)");
     if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value (see --help)");
@@ -366,24 +388,27 @@ int run_prove(const std::vector<std::string>& args, std::ostream& out, std::ostr
   std::optional<AtomicOutputStream> partial_file;
   if (!o.partial_path.empty()) partial_file.emplace(o.partial_path, "--partial");
 
-  const auto started = std::chrono::steady_clock::now();
-  std::vector<DeviceProof> proofs;
-  for (const Config& c : devices) {
-    if (systemc) proofs.push_back(prove_systemc(c, o));
-#ifdef SPECULAR_HAS_RTL_TWIN
-    else if (o.model == Model::rtl) proofs.push_back(prove_twin<RtlCycleModel>(c, o, latency_cycles(Model::rtl)));
-    else proofs.push_back(prove_twin<RtlSyncCycleModel>(c, o, latency_cycles(Model::rtl_sync)));
-#endif
-  }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-
   const Formats formats;
   const std::size_t per_device = static_cast<std::size_t>(formats.cos.one() / o.cos_stride + 1) * (n_max - n_min + 1);
-  Json settings{{"model", to_string(o.model)}, {"device", o.device}, {"cos_stride", o.cos_stride},
-                {"operations_per_device", per_device}};
   std::size_t shard_per_device = 0;
   for (unsigned n = n_min; n <= n_max; ++n) shard_per_device += shard_has_n(n, o.shard) ? 1 : 0;
   shard_per_device *= static_cast<std::size_t>(formats.cos.one() / o.cos_stride + 1);
+
+  const auto started = std::chrono::steady_clock::now();
+  ProofProgress progress{Progress(std::cerr, shard_per_device * devices.size(), progress_wanted(o.quiet))};
+  std::vector<DeviceProof> proofs;
+  for (const Config& c : devices) {
+    if (systemc) proofs.push_back(prove_systemc(c, o, progress));
+#ifdef SPECULAR_HAS_RTL_TWIN
+    else if (o.model == Model::rtl) proofs.push_back(prove_twin<RtlCycleModel>(c, o, latency_cycles(Model::rtl), progress));
+    else proofs.push_back(prove_twin<RtlSyncCycleModel>(c, o, latency_cycles(Model::rtl_sync), progress));
+#endif
+  }
+  progress.line.finish();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+
+  Json settings{{"model", to_string(o.model)}, {"device", o.device}, {"cos_stride", o.cos_stride},
+                {"operations_per_device", per_device}};
   const int status = report(proofs, settings, o.shard.whole() ? per_device : shard_per_device, out);
   if (partial_file) {
     Json devices_json = Json::array();

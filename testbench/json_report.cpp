@@ -10,8 +10,7 @@ std::string dump_json(const Json& json) {
   return json.dump(-1, ' ', false, Json::error_handler_t::replace);
 }
 
-Json settings_json(const RunDescription& run) {
-  const Formats f(run.config.widths);
+Json run_settings_json(const RunDescription& run) {
   Json s;
   s["model"] = run.model;
   s["stimulus"] = run.stimulus;
@@ -20,6 +19,12 @@ Json settings_json(const RunDescription& run) {
   s["constants"] = to_string(run.config.constants);
   s["clock_period_ps"] = run.clock_period_ps;
   s["operations"] = run.operations;
+  return s;
+}
+
+Json settings_json(const RunDescription& run) {
+  const Formats f(run.config.widths);
+  Json s = run_settings_json(run);
   s["formats"] = Json{{"cos", f.cos.name()}, {"reg9", f.reg9.name()}, {"rom38", f.rom38.name()},
                       {"norm", f.norm.name()}, {"out", f.out.name()}};
   return s;

@@ -20,7 +20,10 @@ using Json = nlohmann::ordered_json;
 /// One line of JSON; bytes that are not UTF-8 (a file name) become U+FFFD.
 std::string dump_json(const Json& json);
 
-/// The report's "settings" object.
+/// What names a run: model, stimulus, policies, clock and operation count — the first
+/// fields of the report's settings and of a partial result's (partial.h).
+Json run_settings_json(const RunDescription& run);
+/// The report's "settings" object: run_settings_json and the formats.
 Json settings_json(const RunDescription& run);
 /// The report's "summary" object. `places` adds what a merge needs and a report does
 /// not show: each maximum's operation index ("at") and the results' checksum.

@@ -44,14 +44,7 @@ double process_cpu_seconds() {
 
 Json partial_settings(const RunDescription& whole, const std::array<long long, 3>& rgb,
                       std::uint64_t input_checksum) {
-  Json s;
-  s["model"] = whole.model;
-  s["stimulus"] = whole.stimulus;
-  s["normalisation"] = to_string(whole.config.normalisation);
-  s["saturation"] = to_string(whole.config.saturation);
-  s["constants"] = to_string(whole.config.constants);
-  s["clock_period_ps"] = whole.clock_period_ps;
-  s["operations"] = whole.operations;
+  Json s = run_settings_json(whole);
   s["text_rows"] = whole.text_rows;
   Json widths;
   for (const WidthField& field : width_fields()) widths[field.name] = whole.config.widths.*field.member;

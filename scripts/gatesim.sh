@@ -10,7 +10,13 @@
 #   scripts/gatesim.sh [options] --hazards T_SIM_NS OUT_DIR [ROM_DIR]
 #
 #   --top NAME          top module (default specular_device); its testbench settings are
-#                       scripts/silicon/NAME/gatesim.conf
+#                       scripts/silicon/NAME/gatesim.conf, or for a design variant's top
+#                       without a folder (rtl/specular_NAME.v) scripts/silicon/variant/'s:
+#                       rtl/tb/specular_variant_tb.v, vectors from the variant's C++ model
+#                       (specular_variant_vectors NAME --count 18+R --seed 1, R = --random,
+#                       here 10 by default: 28 operations; --policies and --groups unused)
+#   --vectors-tool PATH specular_variant_vectors (default
+#                       build/testbench/specular_variant_vectors), for a variant's top
 #   --netlist-dir DIR   the output folder of scripts/silicon.sh (mapped.v, device.sdf,
 #                       rom_macros_sim.v); default: run silicon.sh --no-gatesim into
 #                       OUT_DIR/silicon first
@@ -55,6 +61,7 @@ policies="patent/patent/clamp"
 random=8
 groups=2
 specular_tb="$root/build/testbench/specular_tb"
+vectors_tool="$root/build/testbench/specular_variant_vectors"
 bisect=""
 hazards=""
 random_set=0
@@ -65,12 +72,13 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --quiet) quiet=1; shift ;;
-    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards)
+    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--vectors-tool)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --policies) policies="$2" ;;
         --random) random="$2"; random_set=1 ;; --groups) groups="$2"; groups_set=1 ;;
         --specular-tb) specular_tb="$2" ;; --bisect) bisect="$2" ;; --hazards) hazards="$2" ;;
+        --vectors-tool) vectors_tool="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -100,6 +108,9 @@ fi
 [[ "$random" =~ ^[0-9]+$ && $random -le 2000 ]] || fail_args "--random '$random' is not a count from 0 to 2000"
 [[ "$groups" =~ ^[1-8]$ ]] || fail_args "--groups '$groups' is not a count from 1 to 8"
 conf="$here/silicon/$top/gatesim.conf"
+if [[ ! -d "$here/silicon/$top" && "$top" == specular_* && -f "$root/rtl/$top.v" ]]; then
+  conf="$here/silicon/variant/gatesim.conf"   # a design variant's top: the generic settings
+fi
 [[ -f "$conf" ]] || fail_args "top '$top' has no gate-level settings (scripts/silicon/$top/gatesim.conf)"
 
 need() {
@@ -112,10 +123,19 @@ need iverilog iverilog
 need vvp iverilog
 need bc bc
 need /usr/bin/python3 python3
+TB_DEFINES=()
+VARIANT_VECTORS=0
+# shellcheck source=/dev/null
+source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS, TB_DEFINES, VARIANT_VECTORS (per top)
+if [[ $VARIANT_VECTORS -eq 1 ]]; then
+  [[ -x "$vectors_tool" ]] || fail_args "specular_variant_vectors not found at '$vectors_tool' (cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)"
+  [[ $random_set -eq 1 ]] || random=10
+else
 [[ -x "$specular_tb" ]] || fail_args "specular_tb not found at '$specular_tb' (cmake --build build --target specular_tb, or --specular-tb PATH)"
 for image in rom5.hex rom38.hex pins.hex; do
   [[ -f "$rom_dir/$image" ]] || fail_args "'$rom_dir/$image' not found: build the ROM images (cmake --build build --target specular_rom_images) or name their folder"
 done
+fi
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 rom_dir="$(cd "$rom_dir" && pwd)"
@@ -128,16 +148,21 @@ netlist_dir="$(cd "$netlist_dir" && pwd)"
 for f in mapped.v device.sdf rom_macros_sim.v; do
   [[ -f "$netlist_dir/$f" ]] || fail_args "'$netlist_dir/$f' not found: run scripts/silicon.sh first"
 done
-# shellcheck source=/dev/null
-source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS (per top)
 
 # ---- the SDF Icarus can read, the ROM models at their SDF access time ---------------
 /usr/bin/python3 "$here/silicon/gatesim_sdf.py" "$netlist_dir" "$out" > "$out/sdf.log" 2>&1 \
   || { echo "gatesim.sh: preparing the SDF failed; see $out/sdf.log" >&2; exit 1; }
 
 # ---- vectors: specular_tb writes the expected values, one file per policy ----------
+if [[ $VARIANT_VECTORS -eq 1 ]]; then
+  # a design variant: its C++ model's expected values, one file, no policy
+  "$vectors_tool" "${top#specular_}" --count $((18 + random)) --seed 1 --out "$out/vectors.txt" \
+    > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
+  echo "variant 0 0 0 $out/vectors.txt" > "$out/policies.txt"
+else
 /usr/bin/python3 "$here/silicon/gatesim_vectors.py" "$specular_tb" "$out" "$policies" "$groups" "$random" \
   > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
+fi
 
 # compile_tb T VVP LOG [PROBE_TOP PROBE_FILE]: the testbench at period T for the policy
 # in $constants $normalisation $literal $vectors (the caller's), against the cell models,
@@ -145,7 +170,7 @@ source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS (per top)
 compile_tb() {
   local T="$1" vvp="$2" log="$3" tops=(-s "$TB_TOP") files=()
   if [[ $# -ge 5 ]]; then tops+=(-s "$4"); files+=("$5"); fi
-  iverilog -g2005 -gspecify -o "$vvp" "${tops[@]}" -DGATE_LEVEL \
+  iverilog -g2005 -gspecify -o "$vvp" "${tops[@]}" -DGATE_LEVEL ${TB_DEFINES[@]/#/-D} \
     "-DSDF_FILE=\"$out/icarus.sdf\"" \
     "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
     "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \

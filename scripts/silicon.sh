@@ -12,7 +12,16 @@
 #   --no-gatesim  skip the T_sim bisection and the hazards (T_sim is then reported as
 #                 not measured).
 #   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, 10-15 minutes).
-#   ROM_DIR       rom5.hex, rom38.hex, pins.hex (default build/rtl/rom/default).
+#   --vectors-tool PATH  specular_variant_vectors (default
+#                 build/testbench/specular_variant_vectors): a design variant's vectors.
+#   ROM_DIR       rom5.hex, rom38.hex, pins.hex and a variant's tables (default
+#                 build/rtl/rom/default).
+#
+# A design variant's top (rtl/specular_NAME.v, the common ports of docs/design_space.md)
+# without a folder of its own takes scripts/silicon/variant/ (one clock, inputs 3T/4,
+# outputs read at the next edge); its clocks per result and latency are measured by
+# rtl/tb/specular_variant_tb.v in RTL (tb_rtl.txt, 200 vectors), and after the T_sim
+# bisection every top's vectors are replayed at 1.1 T_sim (gatesim_replay.txt).
 #
 # OUT_DIR gets silicon_report.md, silicon_summary.json, the mapped netlist (mapped.v), the
 # SDC (constraints.sdc), the SDF (device.sdf), the ROM macros' Liberty (rom_macros.lib)
@@ -30,6 +39,7 @@ usage() {
 }
 
 top=specular_device
+vectors_tool="$root/build/testbench/specular_variant_vectors"
 gatesim=1
 hazards=1
 args=()
@@ -41,6 +51,8 @@ while [[ $# -gt 0 ]]; do
     --top=*) top="${1#--top=}"; shift ;;
     --no-gatesim) gatesim=0; shift ;;
     --no-hazards) hazards=0; shift ;;
+    --vectors-tool) [[ $# -ge 2 ]] || { echo "silicon.sh: --vectors-tool needs a path" >&2; exit 2; }
+           vectors_tool="$2"; shift 2 ;;
     -*) echo "silicon.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     *) args+=("$1"); shift ;;
   esac
@@ -50,9 +62,14 @@ if [[ ${#args[@]} -lt 1 || ${#args[@]} -gt 2 ]]; then
   exit 2
 fi
 top_dir="$here/silicon/$top"
+# A design variant's top (rtl/specular_NAME.v with the common ports of
+# docs/design_space.md) without a folder of its own takes the generic one.
+if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/$top.v" ]]; then
+  top_dir="$here/silicon/variant"
+fi
 if [[ ! -f "$top_dir/constraints.tcl" ]]; then
-  echo "silicon.sh: top '$top' has no flow pieces (scripts/silicon/$top/constraints.tcl);" \
-       "known tops: $(cd "$here/silicon" && ls -d */ | tr -d / | tr '\n' ' ')" >&2
+  echo "silicon.sh: top '$top' has no flow pieces (scripts/silicon/$top/constraints.tcl)" \
+       "and is no design variant (rtl/specular_NAME.v); known tops: $(cd "$here/silicon" && ls -d */ | tr -d / | tr '\n' ' ')" >&2
   exit 2
 fi
 out="${args[0]}"
@@ -85,9 +102,6 @@ lib="$OSU018/osu018_stdcells.lib"
 seconds() { date +%s.%N; }
 t0=$(seconds)
 
-# ---- ROM macros: Liberty, blackboxes, behavioural models ----------------------------
-/usr/bin/python3 "$here/silicon/rom_model.py" "$out" || { echo "silicon.sh: rom_model.py failed" >&2; exit 1; }
-
 # ---- mapping (Yosys) ---------------------------------------------------------------
 # Hierarchy kept (area per block of Fig. 1); only Fig. 2's leaf gates are flattened into
 # control unit 16, where they are library cells already (silicon/fig2_cells.v), and
@@ -95,16 +109,33 @@ t0=$(seconds)
 # them (as scripts/synth.sh does), so their cells stay counted per block.
 sources=()
 for f in "$root"/rtl/*.v; do sources+=("$f"); done
-script="read_liberty -lib $lib
-read_verilog $out/rom_macros_bb.v
-read_verilog ${sources[*]}
+front_rest="read_verilog ${sources[*]}
 read_verilog -overwrite $here/silicon/fig2_cells.v
 hierarchy -check -top $top
 setattr -mod -set keep_hierarchy 1 *
 setattr -mod -unset keep_hierarchy inverter and2 nand2 nand3 d_flip_flop *multiply_round_saturate
 flatten
-proc; opt; memory -nomap; opt
-techmap -map $here/silicon/rom_macro_map.v
+proc; opt; memory -nomap; opt"
+front="read_liberty -lib $lib
+$front_rest"
+
+# ---- ROM macros: every read-only memory of the top (a probe of the same front end),
+# its Liberty, blackbox, behavioural model and techmap (silicon/rom_model.py) ----------
+if ! (cd "$rom_dir" && yosys -q -l "$out/yosys_memories.log" \
+        -p "$front
+select -clear
+write_json $out/memories.json" >/dev/null 2>&1); then
+  echo "silicon.sh: yosys failed reading the top; see $out/yosys_memories.log" >&2
+  exit 1
+fi
+/usr/bin/python3 "$here/silicon/rom_model.py" "$out" "$out/memories.json" \
+  || { echo "silicon.sh: rom_model.py failed" >&2; exit 1; }
+rm -f "$out/memories.json"
+
+script="read_liberty -lib $lib
+read_verilog $out/rom_macros_bb.v
+$front_rest
+script $out/rom_macro_map.ys
 opt; wreduce; opt
 techmap; opt
 dfflibmap -liberty $lib
@@ -138,14 +169,36 @@ if ! sta -no_splash -exit "$out/sta_run.tcl" > "$out/sta.log" 2>&1 || ! grep -q 
 fi
 t2=$(seconds)
 
+# ---- a design variant: clocks per result and latency from the generic testbench in RTL
+if [[ "$top_dir" == "$here/silicon/variant" ]]; then
+  [[ -x "$vectors_tool" ]] || { echo "silicon.sh: specular_variant_vectors not found at '$vectors_tool'" \
+    "(cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)" >&2; exit 2; }
+  "$vectors_tool" "${top#specular_}" --count 200 --seed 1 --out "$out/tb_rtl_vectors.txt" \
+    || { echo "silicon.sh: specular_variant_vectors ${top#specular_} failed" >&2; exit 1; }
+  if ! iverilog -g2005 -o "$out/tb_rtl.vvp" -s specular_variant_tb "-DVARIANT_TOP=$top" \
+         "-Pspecular_variant_tb.VECTORS=\"$out/tb_rtl_vectors.txt\"" "${sources[@]}" \
+         "$root/rtl/tb/specular_variant_tb.v" > "$out/tb_rtl_compile.log" 2>&1 \
+     || ! (cd "$rom_dir" && vvp -n "$out/tb_rtl.vvp") > "$out/tb_rtl.txt" 2>&1 \
+     || ! grep -q '^PASS' "$out/tb_rtl.txt"; then
+    echo "silicon.sh: the RTL testbench of $top failed; see $out/tb_rtl.txt, $out/tb_rtl_compile.log" >&2
+    exit 1
+  fi
+fi
+
 # ---- T_sim: gate-level simulation, bisection to 0.1 ns ------------------------------
 if [[ $gatesim -eq 1 ]]; then
   t_sta=$(awk '/t_sta_ns/ {print $2}' "$out/sta_summary.txt")
-  if ! bash "$here/gatesim.sh" --top "$top" --netlist-dir "$out" --bisect "$t_sta" "$out/gatesim" "$rom_dir" \
-       > "$out/gatesim.log" 2>&1; then
+  if ! bash "$here/gatesim.sh" --top "$top" --netlist-dir "$out" --vectors-tool "$vectors_tool" \
+       --bisect "$t_sta" "$out/gatesim" "$rom_dir" > "$out/gatesim.log" 2>&1; then
     echo "silicon.sh: the T_sim bisection failed; see $out/gatesim.log" >&2
     exit 1
   fi
+  # the same vectors replayed at 1.1 T_sim: PASS or FAIL into the summary
+  t_sim=$(awk '/t_sim_ns/ {print $2}' "$out/gatesim/tsim.txt")
+  t_replay=$(printf '%.2f' "$(echo "$t_sim * 1.1" | bc -l)")
+  echo "period_ns $t_replay" > "$out/gatesim_replay.txt"
+  bash "$here/gatesim.sh" --top "$top" --netlist-dir "$out" --vectors-tool "$vectors_tool" --quiet \
+    "$t_replay" "$out/gatesim_replay" "$rom_dir" >> "$out/gatesim_replay.txt" 2>&1 || true
 fi
 t3=$(seconds)
 # ---- Fig. 2's hazards at T_sim and 2 T_sim -------------------------------------------

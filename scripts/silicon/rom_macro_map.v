@@ -1,6 +1,8 @@
-// Yosys techmap for scripts/silicon.sh: the two ROM memories of rtl/ become the memory
-// macros ROM5_MACRO and ROM38_MACRO (Liberty models written by rom_model.py), never
-// gates. Any other memory fails the map (the flow then stops: rtl/ has no other).
+// Yosys techmap template for scripts/silicon.sh: rom_model.py writes one copy per ROM
+// macro (MACRO_NAME, MACRO_WORDS, MACRO_WIDTH, MACRO_ABITS filled in) and silicon.sh
+// applies it to that macro's memories only (module/cell selections, rom_macro_map.ys):
+// the read-only memories of a top (ROMs 5 and 38, a variant's tables) become the memory
+// macros of rom_macros.lib, never gates. A memory of another shape fails the map.
 (* techmap_celltype = "$mem_v2" *)
 module rom_macro_map (RD_CLK, RD_EN, RD_ARST, RD_SRST, RD_ADDR, RD_DATA,
                       WR_CLK, WR_EN, WR_ADDR, WR_DATA);
@@ -34,16 +36,12 @@ module rom_macro_map (RD_CLK, RD_EN, RD_ARST, RD_SRST, RD_ADDR, RD_DATA,
   input [WR_PORTS*ABITS-1:0] WR_ADDR;
   input [WR_PORTS*WIDTH-1:0] WR_DATA;
 
-  // Asynchronous single-port read-only memories at the default widths only.
-  localparam ROM5 = RD_PORTS == 1 && WR_PORTS == 0 && RD_CLK_ENABLE == 0 &&
-                    SIZE == 32768 && WIDTH == 22;
-  localparam ROM38 = RD_PORTS == 1 && WR_PORTS == 0 && RD_CLK_ENABLE == 0 &&
-                     SIZE == 16384 && WIDTH == 25;
+  // Asynchronous single-port read-only memory of the macro's size only.
+  localparam FITS = RD_PORTS == 1 && WR_PORTS == 0 && RD_CLK_ENABLE == 0 &&
+                    SIZE == MACRO_WORDS && WIDTH == MACRO_WIDTH && ABITS >= MACRO_ABITS;
   generate
-    if (ROM5)
-      ROM5_MACRO macro (.A(RD_ADDR[14:0]), .Q(RD_DATA));
-    else if (ROM38)
-      ROM38_MACRO macro (.A(RD_ADDR[13:0]), .Q(RD_DATA));
+    if (FITS)
+      MACRO_NAME macro (.A(RD_ADDR[MACRO_ABITS-1:0]), .Q(RD_DATA));
     else begin
       wire _TECHMAP_FAIL_ = 1'b1;
     end

@@ -1,5 +1,7 @@
 #!/usr/bin/env python3
-"""ROM 5 and ROM 38 as memory macros of the OSU 0.18 um flow (scripts/silicon.sh).
+"""Every read-only memory of a top as a memory macro of the OSU 0.18 um flow
+(scripts/silicon.sh): ROM 5 and ROM 38 of the device, and any table of a design variant
+(exp2, reciprocal, a second ROM 5, ...), each sized by its words and width.
 
 No public area or access-time figure of a 0.18 um mask ROM (or ROM compiler) of these
 sizes could be found, so this is the issue's fallback, a first-principles model:
@@ -14,12 +16,24 @@ sizes could be found, so this is the issue's fallback, a first-principles model:
     multiplexer + output buffer (MUX_LEVELS gate delays).
 The constants below are the whole model; docs/silicon.md quotes them.
 
-  rom_model.py OUT_DIR   writes rom_macros.lib (Liberty), rom_macros_bb.v (blackboxes for
-                         Yosys), rom_macros_sim.v (behavioural models with the access time
-                         for the gate-level simulation) and rom_model.json (the figures).
+  rom_model.py OUT_DIR [MEMORIES_JSON]
+      writes rom_macros.lib (Liberty), rom_macros_bb.v (blackboxes for Yosys),
+      rom_macros_sim.v (behavioural models with the access time for the gate-level
+      simulation) and rom_model.json (the figures).
+      MEMORIES_JSON: Yosys `write_json` of the top after `memory -nomap` (silicon.sh's
+      probe). Every $mem_v2 there must be read-only with asynchronous read ports (else
+      exit 1, naming it); one macro per distinct (words, width, contents): ROM5_MACRO
+      (32768 x 22) and ROM38_MACRO (16384 x 25, plus ROM38_BANK_MACRO, the one bank, for
+      the report) keep their names and figures, any other is ROM_<words>X<width>_MACRO
+      (a letter after it when two tables share a size). Also writes each macro's words
+      (NAME.hex, from the memory's INIT, read by its simulation model), a techmap per
+      macro (rom_macro_map_NAME.v, from rom_macro_map.v) and rom_macro_map.ys (the
+      techmap commands, each selecting its memories by module/cell).
+      Without MEMORIES_JSON: the device's three macros (images rom5.hex, rom38.hex).
 """
 import json
 import math
+import os
 import sys
 
 LAMBDA_UM = 0.1
@@ -36,7 +50,9 @@ OUTPUT_KOHM = 1.0            # BUFX4 output resistance: delay per pF of load
 INPUT_PF = 0.02              # an address pin drives two NAND3 predecoder inputs
 AREA = {"NAND3X1": 36, "INVX4": 24, "INVX1": 16, "MUX2X1": 48, "BUFX4": 32}  # lib areas
 
-# name, words, width, address bits, column ways (words per row)
+# name, words, width, address bits, column ways (words per row): the device's ROMs. The
+# column ways of any other table: the power of two that makes its array the squarest
+# (rows closest to columns), the rule these three follow.
 MACROS = [
     ("ROM5_MACRO", 32768, 22, 15, 32),
     ("ROM38_MACRO", 16384, 25, 14, 32),       # the 16 banks rtl/rom38.v holds
@@ -44,8 +60,19 @@ MACROS = [
 ]
 
 
+def squarest_ways(words, width):
+    best = None
+    for k in range(0, 11):
+        ways = 1 << k
+        rows = -(-words // ways)
+        score = abs(rows - ways * width)
+        if best is None or score < best[0]:
+            best = (score, ways)
+    return best[1]
+
+
 def model(name, words, width, abits, ways):
-    rows = words // ways
+    rows = -(-words // ways)
     columns = ways * width
     bits = words * width
     array = bits * BIT_CELL_UM2
@@ -118,14 +145,15 @@ def blackboxes(models):
     return "\n".join(out) + "\n"
 
 
-def behavioural(models):
+def behavioural(models, images=None):
     out = ["// ROM macros for the gate-level simulation (scripts/gatesim.sh): the words of the",
            "// image, valid the Liberty access time after the address settles (an inertial",
            "// delay: an address held shorter than the access time never reaches Q).",
            "`timescale 1ns / 10ps"]
-    images = {"ROM5_MACRO": "rom5.hex", "ROM38_MACRO": "rom38.hex", "ROM38_BANK_MACRO": "rom38.hex"}
+    if images is None:
+        images = {"ROM5_MACRO": "rom5.hex", "ROM38_MACRO": "rom38.hex"}
     for m in models:
-        if m["name"] not in images or m["name"] == "ROM38_BANK_MACRO":
+        if m["name"] not in images:
             continue  # one bank: area and timing only (the netlist holds all 16 banks)
         a, w = m["address_bits"], m["width"]
         out += [f"module {m['name']} (A, Q);",
@@ -140,21 +168,112 @@ def behavioural(models):
     return "\n".join(out) + "\n"
 
 
+MAP_TEMPLATE = "rom_macro_map.v"   # beside this file; NAME, ABITS placeholders
+
+
+def memories(path):
+    """The $mem_v2 cells of a Yosys JSON: (module, cell, words, width, init bits)."""
+    design = json.load(open(path))
+    found = []
+    for module, body in design["modules"].items():
+        for cell, c in body.get("cells", {}).items():
+            if c["type"] != "$mem_v2":
+                continue
+            p = {k: v for k, v in c["parameters"].items()}
+            num = lambda k: int(p[k], 2)
+            if num("WR_PORTS") != 0 or num("RD_PORTS") != 1 or set(p["RD_CLK_ENABLE"]) != {"0"}:
+                raise SystemExit(f"rom_model.py: memory {module}/{cell} is not a read-only memory "
+                                 f"with one asynchronous read port (WR_PORTS {num('WR_PORTS')}, "
+                                 f"RD_PORTS {num('RD_PORTS')}, RD_CLK_ENABLE {p['RD_CLK_ENABLE']}); "
+                                 "only ROMs become macros")
+            found.append((module, cell, num("SIZE"), num("WIDTH"), p["INIT"]))
+    return found
+
+
+def hex_words(init, words, width):
+    """INIT (MSB first, word k at bits [k*width +: width]) as $readmemh lines, word 0 first."""
+    digits = -(-width // 4)
+    lines = []
+    for k in range(words):
+        end = len(init) - k * width
+        bits = init[max(end - width, 0):end] if end > 0 else ""
+        bits = bits.rjust(digits * 4, "0")
+        line = ""
+        for i in range(0, len(bits), 4):
+            nib = bits[i:i + 4]
+            line += "x" if any(b not in "01" for b in nib) else f"{int(nib, 2):x}"
+        lines.append(line)
+    return "\n".join(lines) + "\n"
+
+
 def main():
-    if len(sys.argv) != 2:
-        sys.stderr.write("usage: rom_model.py OUT_DIR\n")
+    if len(sys.argv) not in (2, 3):
+        sys.stderr.write("usage: rom_model.py OUT_DIR [MEMORIES_JSON]\n")
         return 2
     out = sys.argv[1]
-    models = [model(*m) for m in MACROS]
+    images = None
+    instances = {}
+    if len(sys.argv) == 2:
+        models = [model(*m) for m in MACROS]
+    else:
+        known = {(m[1], m[2]): m for m in MACROS[:2]}
+        groups = {}   # (words, width, init) -> name
+        order = []
+        for module, cell, words, width, init in memories(sys.argv[2]):
+            key = (words, width, init)
+            if key not in groups:
+                taken = {groups[k] for k in groups}
+                if (words, width) in known and known[(words, width)][0] not in taken:
+                    name = known[(words, width)][0]
+                else:
+                    base = f"ROM_{words}X{width}"
+                    name = f"{base}_MACRO"
+                    letter = ord("B")
+                    while name in taken:
+                        name = f"{base}{chr(letter)}_MACRO"
+                        letter += 1
+                groups[key] = name
+                order.append(key)
+            instances.setdefault(groups[key], []).append(f"{module}/{cell}")
+        models, images = [], {}
+        for key in order:
+            words, width, init = key
+            name = groups[key]
+            abits = max(1, (words - 1).bit_length())
+            if (words, width) in known and known[(words, width)][0] == name:
+                models.append(model(*known[(words, width)]))
+            else:
+                models.append(model(name, words, width, abits, squarest_ways(words, width)))
+            with open(f"{out}/{name}.hex", "w") as f:
+                f.write(hex_words(init, words, width))
+            images[name] = f"{out}/{name}.hex"
+            if name == "ROM38_MACRO":
+                models.append(model(*MACROS[2]))
+        template = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), MAP_TEMPLATE)).read()
+        commands = []
+        for m in models:
+            if m["name"] not in instances:
+                continue
+            mapfile = f"{out}/rom_macro_map_{m['name']}.v"
+            with open(mapfile, "w") as f:
+                f.write(template.replace("MACRO_NAME", m["name"])
+                        .replace("MACRO_WORDS", str(m["words"]))
+                        .replace("MACRO_WIDTH", str(m["width"]))
+                        .replace("MACRO_ABITS", str(m["address_bits"])))
+            for inst in instances[m["name"]]:
+                commands.append(f"techmap -map {mapfile} {inst}")
+        with open(f"{out}/rom_macro_map.ys", "w") as f:
+            f.write("\n".join(commands) + "\n")
     with open(f"{out}/rom_macros.lib", "w") as f:
         f.write(liberty(models))
     with open(f"{out}/rom_macros_bb.v", "w") as f:
         f.write(blackboxes(models))
     with open(f"{out}/rom_macros_sim.v", "w") as f:
-        f.write(behavioural(models))
-    constants = {k: v for k, v in globals().items() if k.isupper() and k not in ("AREA", "MACROS")}
+        f.write(behavioural(models, images))
+    constants = {k: v for k, v in globals().items()
+                 if k.isupper() and k not in ("AREA", "MACROS", "MAP_TEMPLATE")}
     with open(f"{out}/rom_model.json", "w") as f:
-        json.dump({"constants": constants, "macros": models}, f, indent=1)
+        json.dump({"constants": constants, "macros": models, "instances": instances}, f, indent=1)
     return 0
 
 

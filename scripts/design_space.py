@@ -1,0 +1,188 @@
+#!/usr/bin/env python3
+"""The design space in silicon (issue 26): every design's silicon_summary.json beside its
+error JSON, as one markdown table and two Pareto plots (docs/design_space.md, "Silicon
+flow for variants").
+
+  /usr/bin/python3 scripts/design_space.py RUNS_DIR [--error NAME=FILE ...]
+                   [--table FILE] [--svg-dir DIR]
+
+RUNS_DIR holds one folder per design, each a `scripts/silicon.sh` OUT_DIR (its
+silicon_summary.json names the top: specular_NAME), and beside the summary the design's
+error JSON, `error.json` (`specular_variant_error NAME --json error.json`: lobe_max_abs,
+lobe_mean_abs, lobe_max_at {cos_code, n}, out_max_abs, out_mean_abs, out_max_at).
+--error NAME=FILE names an error JSON elsewhere (NAME: the design, e.g. patent). The drawn
+device (specular_device) and the synchronous one (specular_device_sync) compute the
+patent's bits: without an error file of their own they take the patent's.
+
+Writes the table (markdown, default RUNS_DIR/design_space_table.md; printed too) and,
+with --svg-dir, area_vs_error.svg (die estimate against the lobe's max |error|) and
+throughput_vs_error.svg (results/s streamed per mm² of die against the same error), the
+Pareto front of each marked (no other design is at least as good on both axes and better
+on one). Exit status: 0 written, 1 a file missing or unreadable, 2 bad arguments.
+"""
+import argparse
+import json
+import os
+import sys
+
+DEVICE_TOPS = {"specular_device": "device (Fig. 2, drawn)",
+               "specular_device_sync": "device, synchronous"}
+
+
+def design_name(top):
+    return top[len("specular_"):] if top.startswith("specular_") else top
+
+
+def load(runs, errors):
+    designs = []
+    for entry in sorted(os.listdir(runs)):
+        path = os.path.join(runs, entry, "silicon_summary.json")
+        if not os.path.isfile(path):
+            continue
+        with open(path) as f:
+            s = json.load(f)
+        name = design_name(s["top"])
+        error_file = errors.get(name) or os.path.join(runs, entry, "error.json")
+        if not os.path.isfile(error_file) and s["top"] in DEVICE_TOPS:
+            error_file = errors.get("patent") or os.path.join(runs, "patent", "error.json")
+        e = None
+        if os.path.isfile(error_file):
+            with open(error_file) as f:
+                e = json.load(f)
+        designs.append({"name": name, "top": s["top"], "summary": s, "error": e,
+                        "label": DEVICE_TOPS.get(s["top"], name)})
+    return designs
+
+
+def pareto(points):
+    """Indices of the points no other point dominates; each point (x, y), both minimised."""
+    front = []
+    for i, (x, y) in enumerate(points):
+        if x is None or y is None:
+            continue
+        dominated = any(j != i and a is not None and b is not None and a <= x and b <= y
+                        and (a < x or b < y) for j, (a, b) in enumerate(points))
+        if not dominated:
+            front.append(i)
+    return front
+
+
+def num(v, digits=2):
+    if v is None:
+        return "—"
+    if isinstance(v, float) and not v.is_integer():
+        return f"{v:.{digits}f}"
+    return f"{int(v):,}".replace(",", " ")
+
+
+def sci(v):
+    return "—" if v is None else f"{v:.3g}"
+
+
+def table(designs, front_area, front_tput):
+    lines = [
+        "| design | logic (µm²) | ROM macros (µm²) | total (mm²) | die est. (mm²) | flip-flops | "
+        "T_sta (ns) | T_sim (ns) | clocks / result | latency (clocks) | latency (ns) | "
+        "results/s streamed | results/s per mm² (die) | lobe max \\|err\\| (at cos code, n) | "
+        "lobe mean \\|err\\| | pins max \\|err\\| | pins mean \\|err\\| | gate level at 1.1 T_sim | Pareto |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---|---|"]
+    for i, d in enumerate(designs):
+        s, e = d["summary"], d["error"] or {}
+        at = e.get("lobe_max_at")
+        where = f" ({at['cos_code']}, {at['n']})" if at else ""
+        replay = s.get("gatesim_replay_1_1_t_sim")
+        replay = (f"{replay['result']} ({replay['period_ns']} ns)" if replay else "not run")
+        cpr = s.get("clocks_per_result_streamed")
+        cpr_text = num(cpr)
+        if s.get("clocks_per_result_reload") not in (None, cpr):
+            cpr_text += f" ({num(s['clocks_per_result_reload'])} reloading)"
+        marks = [m for m, f in (("area", front_area), ("throughput/mm²", front_tput)) if i in f]
+        lines.append(
+            f"| {d['label']} | {num(s['area_logic_um2'], 0)} | {num(s['area_macros_um2'], 0)} | "
+            f"{s['area_total_um2'] / 1e6:.3f} | {s['die_area_estimate_mm2']:.3f} | {s['flip_flops']} | "
+            f"{s['t_sta_ns']:.2f} | {num(s.get('t_sim_ns'), 1)} | {cpr_text} | "
+            f"{num(s.get('latency_clocks'), 1)} | {num(s.get('latency_ns_at_t_sta'), 1)} | "
+            f"{s['results_per_second_streamed_at_t_sta'] / 1e6:.1f} M | "
+            f"{s['results_per_second_per_mm2_streamed'] / 1e6:.2f} M | "
+            f"{sci(e.get('lobe_max_abs'))}{where} | {sci(e.get('lobe_mean_abs'))} | "
+            f"{sci(e.get('out_max_abs'))} | {sci(e.get('out_mean_abs'))} | {replay} | "
+            f"{', '.join(marks) if marks else ''} |")
+    return "\n".join(lines) + "\n"
+
+
+def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where="post"):
+    import matplotlib
+    matplotlib.use("Agg")
+    matplotlib.rcParams["svg.hashsalt"] = "specular-design-space"  # reproducible ids
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.5, 5.0))
+    for i, d in enumerate(designs):
+        if xs[i] is None or ys[i] is None:
+            continue
+        on = i in front
+        ax.scatter([xs[i]], [ys[i]], s=60 if on else 36, marker="o" if on else "s",
+                   color="tab:red" if on else "tab:blue", zorder=3)
+        ax.annotate(d["label"], (xs[i], ys[i]), textcoords="offset points", xytext=(6, 4),
+                    fontsize=8)
+    pts = sorted((xs[i], ys[i]) for i in front)
+    if len(pts) > 1:
+        ax.step([p[0] for p in pts], [p[1] for p in pts], where=where, color="tab:red",
+                linestyle="--", linewidth=1, label="Pareto front")
+        ax.legend(loc="best", fontsize=8)
+    ax.set_yscale("log")
+    if x_log:
+        ax.set_xscale("log")
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title, fontsize=10)
+    ax.grid(True, which="both", linewidth=0.3)
+    fig.tight_layout()
+    fig.savefig(path, format="svg", metadata={"Date": None})
+    plt.close(fig)
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("runs")
+    p.add_argument("--error", action="append", default=[], metavar="NAME=FILE")
+    p.add_argument("--table")
+    p.add_argument("--svg-dir")
+    a = p.parse_args()
+    errors = {}
+    for item in a.error:
+        if "=" not in item:
+            p.error(f"--error '{item}' is not NAME=FILE")
+        k, v = item.split("=", 1)
+        errors[k] = v
+    if not os.path.isdir(a.runs):
+        sys.stderr.write(f"design_space.py: '{a.runs}' is not a folder\n")
+        return 1
+    designs = load(a.runs, errors)
+    if not designs:
+        sys.stderr.write(f"design_space.py: no silicon_summary.json under '{a.runs}'\n")
+        return 1
+    err = [d["error"]["lobe_max_abs"] if d["error"] else None for d in designs]
+    die = [d["summary"]["die_area_estimate_mm2"] for d in designs]
+    tput = [d["summary"]["results_per_second_per_mm2_streamed"] for d in designs]
+    front_area = pareto(list(zip(die, err)))
+    front_tput = pareto([(-t, e) for t, e in zip(tput, err)])
+    text = table(designs, front_area, front_tput)
+    out = a.table or os.path.join(a.runs, "design_space_table.md")
+    with open(out, "w") as f:
+        f.write(text)
+    print(text, end="")
+    if a.svg_dir:
+        os.makedirs(a.svg_dir, exist_ok=True)
+        plot(designs, die, err, front_area, "die estimate (mm², OSU 0.18 µm)",
+             "lobe max |error| (K(n)·cos^n, S10.20)",
+             "Area against error (Pareto front: red)", os.path.join(a.svg_dir, "area_vs_error.svg"))
+        plot(designs, [t / 1e6 for t in tput], err, front_tput,
+             "results/s streamed per mm² of die (M, at T_sta)",
+             "lobe max |error| (K(n)·cos^n, S10.20)",
+             "Throughput per mm² against error (Pareto front: red)",
+             os.path.join(a.svg_dir, "throughput_vs_error.svg"), x_log=True, where="pre")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,124 @@
+// specular_variant_vectors: the vector file of rtl/tb/specular_variant_tb.v for one
+// design variant (docs/design_space.md, "Silicon flow for variants"): one operation per
+// line, in hex, `cos n r g b lobe out_r out_g out_b`, the expected lobe (S10.20, 31 bits)
+// and pins 24-26 (S18.13, 32 bits) computed by the variant's C++ model (make_variant),
+// which its Verilog top equals to the bit (test_variant_rtl_NAME).
+//
+//   specular_variant_vectors NAME [--count N] [--seed S] [--out FILE]
+//
+// The edge cases first (cos 0 and 1, n 1 and 1000, R, G, B 0 and 255, the smallest
+// non-zero cos code), then random operands from std::mt19937_64(seed) up to N operations
+// (default 200, seed 1): n 1..1000, R, G, B 0..255, and cos uniform on 0..65536 for one
+// operation in four, else the code nearest p^(1/n) for p uniform on (0, 1) (a uniform cos
+// makes cos^n underflow to 0 for most n: these keep the lobe spread over its range).
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "specular/variants/variant.h"
+
+namespace {
+
+using specular::Operands;
+using specular::code_t;
+
+constexpr code_t cos_one = code_t{1} << 16;
+
+Operands make(code_t cos, code_t n, code_t r, code_t g, code_t b) {
+  Operands in;
+  in.cos = cos;
+  in.n = n;
+  in.rgb = {r, g, b};
+  return in;
+}
+
+std::vector<Operands> edge_cases() {
+  std::vector<Operands> v;
+  for (code_t cos : {code_t{0}, cos_one, code_t{1}, cos_one - 1, cos_one / 2})
+    for (code_t n : {code_t{1}, code_t{1000}, code_t{2}})
+      v.push_back(make(cos, n, 255, 0, 128));
+  v.push_back(make(cos_one, 1, 255, 255, 255));
+  v.push_back(make(cos_one, 1000, 255, 255, 255));
+  v.push_back(make(0, 1, 0, 0, 0));
+  return v;
+}
+
+unsigned long long bits(code_t value, int width) {
+  return static_cast<unsigned long long>(value) & ((1ULL << width) - 1);
+}
+
+int usage(const std::string& why) {
+  std::cerr << "specular_variant_vectors: " << why
+            << "\nusage: specular_variant_vectors NAME [--count N] [--seed S] [--out FILE]\n";
+  return 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) return usage("a variant name is needed");
+  const std::string name = argv[1];
+  long long count = 200;
+  unsigned long long seed = 1;
+  std::string out_path;
+  for (int i = 2; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) return usage("'" + arg + "' needs a value or is unknown");
+    const std::string value = argv[++i];
+    char* end = nullptr;
+    if (arg == "--count") {
+      count = std::strtoll(value.c_str(), &end, 10);
+      if (*end != '\0' || count < 1 || count > 8192)
+        return usage("--count '" + value + "' is not a count from 1 to 8192");
+    } else if (arg == "--seed") {
+      seed = std::strtoull(value.c_str(), &end, 10);
+      if (*end != '\0' || value.empty()) return usage("--seed '" + value + "' is not a number");
+    } else if (arg == "--out") {
+      out_path = value;
+    } else {
+      return usage("unknown option '" + arg + "'");
+    }
+  }
+  std::unique_ptr<specular::variants::Variant> variant;
+  try {
+    variant = specular::variants::make_variant(name);
+  } catch (const std::invalid_argument& e) {
+    return usage(e.what());
+  }
+  std::vector<Operands> ops = edge_cases();
+  if (static_cast<long long>(ops.size()) > count) ops.resize(static_cast<std::size_t>(count));
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<code_t> cos_d(0, cos_one), n_d(1, 1000), i_d(0, 255), kind_d(0, 3);
+  std::uniform_real_distribution<double> p_d(0.0, 1.0);
+  while (static_cast<long long>(ops.size()) < count) {
+    const code_t n = n_d(rng);
+    const code_t cos = kind_d(rng) == 0
+        ? cos_d(rng)
+        : static_cast<code_t>(std::lround(std::pow(p_d(rng), 1.0 / static_cast<double>(n)) *
+                                          static_cast<double>(cos_one)));
+    const code_t r = i_d(rng), g = i_d(rng), b = i_d(rng);
+    ops.push_back(make(cos, n, r, g, b));
+  }
+  std::ofstream file;
+  if (!out_path.empty()) {
+    file.open(out_path);
+    if (!file) return usage("cannot write '" + out_path + "'");
+  }
+  std::ostream& out = out_path.empty() ? std::cout : file;
+  char line[160];
+  for (const Operands& in : ops) {
+    const auto res = variant->run(in);
+    std::snprintf(line, sizeof line, "%05llx %03llx %02llx %02llx %02llx %08llx %08llx %08llx %08llx\n",
+                  bits(in.cos, 17), bits(in.n, 10), bits(in.rgb[0], 8), bits(in.rgb[1], 8),
+                  bits(in.rgb[2], 8), bits(res.lobe, 31), bits(res.out[0], 32), bits(res.out[1], 32),
+                  bits(res.out[2], 32));
+    out << line;
+  }
+  return out ? 0 : 1;
+}

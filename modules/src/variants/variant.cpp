@@ -1,6 +1,8 @@
 // The variants' registry: one line per variant (name, factory), the patent's first.
 #include "specular/variants/variant.h"
 
+#include "specular/variants/exp2.h"
+
 #include <functional>
 #include <stdexcept>
 #include <utility>
@@ -15,6 +17,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
+      {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
   };
   return table;
 }

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "specular/variants/us5739820.h"
+
 namespace specular {
 namespace variants {
 namespace {
@@ -15,6 +17,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
+      {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
   };
   return table;
 }

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "specular/variants/one_pass.h"
+#include "specular/variants/us5739820.h"
 
 namespace specular {
 namespace variants {
@@ -22,6 +23,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"one_pass", [](const Config& c) { return std::make_unique<OnePass>(c, false); }},
       {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
       {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
+      {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
   };
   return table;
 }

@@ -28,6 +28,7 @@
 #include "specular/rom_images.h"
 #include "specular/constants.h"
 #include "specular/format.h"
+#include "specular/variants/reciprocal.h"
 
 namespace {
 
@@ -148,6 +149,13 @@ void write_images(const Options& o) {
               "pins 19 (h, " + f.mux4.name() + ") and 20 (a, " + f.reg9.name() +
                   "): words 2c, 2c+1 for Constants value c",
               64, words);
+  // Variant schlick's reciprocal table (rtl/reciprocal_nr.v): the same at every width set.
+  const specular::variants::ReciprocalNr reciprocal;
+  write_image(o.out_dir + "/recip.hex",
+              "variant schlick: 1/m table, " + std::to_string(reciprocal.words().size()) + " words x U0." +
+                  std::to_string(specular::variants::ReciprocalNr::word_bits),
+              specular::variants::ReciprocalNr::word_bits,
+              std::vector<std::uint64_t>(reciprocal.words().begin(), reciprocal.words().end()));
 }
 
 std::uint64_t parse_hex(const std::string& text, const std::string& where) {

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "specular/variants/schlick.h"
+
 namespace specular {
 namespace variants {
 namespace {
@@ -15,6 +17,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
+      {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
   };
   return table;
 }

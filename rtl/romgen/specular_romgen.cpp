@@ -30,6 +30,7 @@
 #include "specular/constants.h"
 #include "specular/format.h"
 #include "specular/variants/exp2_unit.h"
+#include "specular/variants/reciprocal.h"
 
 namespace {
 
@@ -160,6 +161,13 @@ void write_images(const Options& o) {
                   std::to_string(exp2.organisation().value_frac_bits) + " fraction bits, difference to the next on " +
                   std::to_string(exp2.delta_bits()) + " bits}",
               exp2.word_bits(), exp2.words());
+  // Variant schlick's reciprocal table (rtl/reciprocal_nr.v): the same at every width set.
+  const specular::variants::ReciprocalNr reciprocal;
+  write_image(o.out_dir + "/recip.hex",
+              "variant schlick: 1/m table, " + std::to_string(reciprocal.words().size()) + " words x U0." +
+                  std::to_string(specular::variants::ReciprocalNr::word_bits),
+              specular::variants::ReciprocalNr::word_bits,
+              std::vector<std::uint64_t>(reciprocal.words().begin(), reciprocal.words().end()));
 }
 
 std::uint64_t parse_hex(const std::string& text, const std::string& where) {

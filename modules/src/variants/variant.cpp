@@ -9,6 +9,7 @@
 
 #include "specular/variants/one_pass.h"
 #include "specular/variants/us5739820.h"
+#include "specular/variants/schlick.h"
 
 namespace specular {
 namespace variants {
@@ -24,6 +25,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
       {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
       {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
+      {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
   };
   return table;
 }

@@ -258,6 +258,8 @@ inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
 /// rounding half up (multiply_round_saturate; y² ≤ 1 never saturates). rtl/squarer.v.
 inline code_t square(const FixedFormat& format, code_t y) {
   return multiply_round_saturate(format, y, y, format.frac_bits);
+}
+
 // ---- Leading-one normaliser (rtl/leading_one_normaliser.v) ------------------------
 /// What a leading-one detector and its shifter give: the index of the highest one of a
 /// `width`-bit code x > 0 and x shifted left until that one sits at bit width − 1 (ROM

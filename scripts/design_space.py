@@ -51,6 +51,10 @@ def load(runs, errors):
                 e = json.load(f)
         designs.append({"name": name, "top": s["top"], "summary": s, "error": e,
                         "label": DEVICE_TOPS.get(s["top"], name)})
+    # the device's tops first (drawn, synchronous), the patent behind the common ports,
+    # then the variants by name
+    order = {"specular_device": 0, "specular_device_sync": 1, "specular_patent": 2}
+    designs.sort(key=lambda d: (order.get(d["top"], 3), d["name"]))
     return designs
 
 
@@ -70,9 +74,9 @@ def pareto(points):
 def num(v, digits=2):
     if v is None:
         return "—"
-    if isinstance(v, float) and not v.is_integer():
+    if isinstance(v, float) and not v.is_integer() and digits > 0:
         return f"{v:.{digits}f}"
-    return f"{int(v):,}".replace(",", " ")
+    return f"{round(v):,}".replace(",", " ")
 
 
 def sci(v):
@@ -114,6 +118,7 @@ def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where
     import matplotlib
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "specular-design-space"  # reproducible ids
+    matplotlib.rcParams["svg.fonttype"] = "none"  # text as text: small, diffable SVG
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7.5, 5.0))
     for i, d in enumerate(designs):

@@ -313,7 +313,12 @@ set -e
   echo "t_sim_ns $hi"
   echo "fails_at_ns $lo"
   echo "first_failure $(grep -h -m1 -E 'MISMATCH|fatal' "$out/T$lo"/*.log | head -1)"
-  echo "policies $policies"
-  echo "vectors_per_policy $(( groups * 10 + random ))"
+  if [[ $VARIANT_VECTORS -eq 1 ]]; then
+    echo "policies default (a design variant)"
+    echo "vectors_per_policy $(( 18 + random ))"
+  else
+    echo "policies $policies"
+    echo "vectors_per_policy $(( groups * 10 + random ))"
+  fi
 } > "$out/tsim.txt"
 echo "gatesim.sh: T_sim = $hi ns (fails at $lo ns)"

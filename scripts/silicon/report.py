@@ -103,7 +103,9 @@ def parse_path(path_file):
     launch_clock = float(re.search(r"^\s+[\d.-]+\s+([\d.-]+)\s+clock \S+ \((?:rise|fall) edge\)", text, re.M).group(1))
     network = re.findall(r"^\s+([\d.-]+)\s+[\d.-]+\s+clock network delay", text, re.M)
     launch_latency = float(network[0]) if network else 0.0
-    delay = arrival - launch_clock - launch_latency
+    # a path from an input pin: its external input delay is the protocol's, not the path's
+    external = re.search(r"^\s+([\d.-]+)\s+[\d.-]+ [v^] input external delay", text, re.M)
+    delay = arrival - launch_clock - launch_latency - (float(external.group(1)) if external else 0.0)
     blocks = []
     for inst, _ in levels:
         block = inst.split("/")[0]

@@ -114,6 +114,22 @@ def table(designs, front_area, front_tput):
     return "\n".join(lines) + "\n"
 
 
+def times_table(designs):
+    """The flow's run time per design (silicon.sh's times.txt: the shared 2-core machine)."""
+    lines = ["| design | mapping (s) | STA (s) | T_sim bisection + replay (s) | ROM macros |",
+             "|---|---:|---:|---:|---|"]
+    for d in designs:
+        s = d["summary"]
+        t = s.get("times_s", {})
+        used = s.get("rom_macro_instances") or {}
+        macros = "; ".join(f"{used.get(n, 1)} × {n} ({m['words']} × {m['width']}, {num(m['area_um2'], 0)} µm²)"
+                           for n, m in sorted(s.get("rom_macros", {}).items())
+                           if n != "ROM38_BANK_MACRO" and (not used or n in used))
+        lines.append(f"| {d['label']} | {t.get('mapping_s', 0):.0f} | {t.get('sta_s', 0):.0f} | "
+                     f"{t.get('gatesim_s', 0):.0f} | {macros} |")
+    return "\n".join(lines) + "\n"
+
+
 def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where="post"):
     import matplotlib
     matplotlib.use("Agg")
@@ -171,7 +187,7 @@ def main():
     tput = [d["summary"]["results_per_second_per_mm2_streamed"] for d in designs]
     front_area = pareto(list(zip(die, err)))
     front_tput = pareto([(-t, e) for t, e in zip(tput, err)])
-    text = table(designs, front_area, front_tput)
+    text = table(designs, front_area, front_tput) + "\n" + times_table(designs)
     out = a.table or os.path.join(a.runs, "design_space_table.md")
     with open(out, "w") as f:
         f.write(text)

@@ -261,6 +261,7 @@ def main():
         "rom_macros": {n: {"words": macros[n]["words"], "width": macros[n]["width"],
                            "area_um2": macros[n]["area_um2"], "access_ns": macros[n]["access_ns"]}
                        for n in macros},
+        "rom_macro_instances": {n: flat[n] for n in used},
         "control_unit_cells": cu_cells,
         "control_unit_cells_match_fig2": cu_ok,
         "t_sta_ns": t_sta,
@@ -359,8 +360,8 @@ def main():
     if gate_replay is not None:
         w(f"Gate-level replay at 1.1 T_sim = {gate_replay['period_ns']} ns: **{gate_replay['result']}**"
           + (f" ({gate_replay['vectors']} vectors, {gate_replay['clocks_per_result']} clocks per result, "
-             f"latency {gate_replay['latency_clocks']} clocks)" if gate_replay["result"] == "PASS"
-             else f" ({gate_replay['first_failure']})") + "\n")
+             f"latency {gate_replay['latency_clocks']} clocks)" if "vectors" in gate_replay
+             else f" ({gate_replay['first_failure']})" if gate_replay["result"] == "FAIL" else "") + "\n")
     w("## T_sta beside T_sim\n")
     if t_sim is None:
         w("T_sim: not measured in this run (--no-gatesim).\n")

@@ -2,11 +2,12 @@
 // cut into stages so that the clock is set by one pass, not by two passes and the tail.
 //   edge 1  operand registers 1, 2, 10-12 (with every start)
 //   edge 2  pass 1's sum                       (ROM 5, multiplier 6, inverter 7, adder 8)
-//   edge 3  pass 2's sum (register 9's A) and ROM 38's K(n), read beside pass 2
-//   edge 4  multiplier 39's K·A
+//   edge 3  pass 2's sum (register 9's A)
+//   edge 4  ROM 38's K(n) and multiplier 39's K·A
 //   edge 5  multipliers 13-15 into the output registers; valid
+// Multipliers 39 and 13-15 get a stage each: together they are longer than a pass.
 // A start is taken on every clock (ready is always 1); each result is valid five clocks
-// after its start, in order. Intensities ride along the stages to multipliers 13-15.
+// after its start, in order. n and the intensities ride along to ROM 38 and multipliers 13-15.
 // The configuration is a build-time parameter set; the defaults are the patent's
 // (specular_patent.v): h = 1/2 on U10.8, a = 1.0 on S14.22, clamp, ROM 38 bank 0.
 `default_nettype none
@@ -69,26 +70,27 @@ module specular_one_pass_pipelined #(
   register_enable #(.W(N_BITS)) n2_reg    (.clk(clk), .enable(valid1_q), .d(reg2_q),    .q(n2_q));
   register_enable #(.W(RGB_W))  rgb2_reg  (.clk(clk), .enable(valid1_q), .d(rgb1_q),    .q(rgb2_q));
 
-  // Stage 3: pass 2 on its own ROM 5 (select 36 = 1): a - h·log2(pass 1) = register 9's
-  // A; ROM 38 reads K(n) beside it, off the critical path.
-  wire [REG9_W-1:0]  pass2_sum, reg9_q;
-  wire [ROM38_W-1:0] rom38_k, k3_q;
-  wire [RGB_W-1:0]   rgb3_q;
+  // Stage 3: pass 2 on its own ROM 5 (select 36 = 1): a - h·log2(pass 1) = register 9's A.
+  wire [REG9_W-1:0] pass2_sum, reg9_q;
+  wire [N_BITS-1:0] n3_q;
+  wire [RGB_W-1:0]  rgb3_q;
   pass_datapath #(.ROM5_IMAGE(ROM5_IMAGE)) pass2 (
     .literal(LITERAL != 0), .address(pass1_q), .operand(H19), .a20(A20), .carry34(1'b1),
     .sum(pass2_sum));
-  rom38 #(.N_BITS(N_BITS), .WORD_W(ROM38_W), .BANK_BITS(4), .IMAGE(ROM38_IMAGE)) rom38 (
-    .bank(ROM38_BANK), .reg2(n2_q), .k(rom38_k));
-  register_enable #(.W(REG9_W))  reg9     (.clk(clk), .enable(valid2_q), .d(pass2_sum), .q(reg9_q));
-  register_enable #(.W(ROM38_W)) k3_reg   (.clk(clk), .enable(valid2_q), .d(rom38_k),   .q(k3_q));
-  register_enable #(.W(RGB_W))   rgb3_reg (.clk(clk), .enable(valid2_q), .d(rgb2_q),    .q(rgb3_q));
+  register_enable #(.W(REG9_W)) reg9     (.clk(clk), .enable(valid2_q), .d(pass2_sum), .q(reg9_q));
+  register_enable #(.W(N_BITS)) n3_reg   (.clk(clk), .enable(valid2_q), .d(n2_q),      .q(n3_q));
+  register_enable #(.W(RGB_W))  rgb3_reg (.clk(clk), .enable(valid2_q), .d(rgb2_q),    .q(rgb3_q));
 
-  // Stage 4: multiplier 39, K(n)·A.
-  wire [NORM_W-1:0] mul39_norm, norm4_q;
-  wire [RGB_W-1:0]  rgb4_q;
+  // Stage 4: ROM 38's K(n) and multiplier 39, K(n)·A (ROM 38's access and multiplier 39
+  // together are shorter than a pass: n rides along, 10 bits instead of K's 25).
+  wire [ROM38_W-1:0] rom38_k;
+  wire [NORM_W-1:0]  mul39_norm, norm4_q;
+  wire [RGB_W-1:0]   rgb4_q;
+  rom38 #(.N_BITS(N_BITS), .WORD_W(ROM38_W), .BANK_BITS(4), .IMAGE(ROM38_IMAGE)) rom38 (
+    .bank(ROM38_BANK), .reg2(n3_q), .k(rom38_k));
   multiplier39 #(.A_W(REG9_W), .K_W(ROM38_W), .OUT_W(NORM_W),
                  .SHIFT(REG9_FRAC + ROM38_FRAC - NORM_FRAC)) mul39 (
-    .reg9(reg9_q), .k(k3_q), .norm(mul39_norm));
+    .reg9(reg9_q), .k(rom38_k), .norm(mul39_norm));
   register_enable #(.W(NORM_W)) norm4_reg (.clk(clk), .enable(valid3_q), .d(mul39_norm), .q(norm4_q));
   register_enable #(.W(RGB_W))  rgb4_reg  (.clk(clk), .enable(valid3_q), .d(rgb3_q),     .q(rgb4_q));
 

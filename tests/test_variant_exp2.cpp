@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -75,6 +76,17 @@ TEST(Exp2Unit, ExactAtZeroAndAtIntegers) {
   EXPECT_EQ(unit.pow2(-(code_t{23} << 22)), 1) << "2^−23 = ½ LSB rounds up";
   EXPECT_EQ(unit.pow2(-(code_t{24} << 22)), 0);
   EXPECT_EQ(unit.pow2(-(code_t{16384} << 22)), 0) << "register 9's most negative code";
+}
+
+TEST(Exp2Unit, TheTableFitsTheVerilogUnitsWords) {
+  // rtl/exp2_unit.v's defaults: 2^9 words of VALUE_FRAC = 24 + DELTA_W = 16 bits. The largest
+  // difference, 2^25·(1 − 2^(−1/512)) ≈ 45 400, needs 16 bits.
+  const Exp2Table unit;
+  EXPECT_EQ(unit.words().size(), 512u);
+  EXPECT_EQ(unit.delta_bits(), 16);
+  EXPECT_EQ(unit.word_bits(), 40);
+  // Word 0 is {2^0 − 1 = 0, round(2^(1/512)·2^24) − 2^24}.
+  EXPECT_EQ(unit.words()[0], static_cast<std::uint64_t>(std::llround(std::exp2(1.0 / 512) * (1 << 24)) - (1 << 24)));
 }
 
 TEST(Exp2Unit, RefusesAnOrganisationItCannotBuild) {

@@ -1,5 +1,5 @@
-// The exp2 unit: 2^x for x <= 0, the usual hardware exp2 (Pineiro, Oberman et al., IEEE
-// Trans. Computers 54(3), 2005; docs/variants/exp2.md). x's integer part becomes a right
+// The exp2 unit: 2^x for x <= 0, the usual hardware exp2 (Tang 1989; Oberman and Siu,
+// ARITH-17, 2005; docs/variants/exp2.md). x's integer part becomes a right
 // shift; the top ADDR_BITS bits of its fraction f address a table of 2^(i/2^ADDR_BITS)
 // (VALUE_FRAC fraction bits, the leading one implied) beside the difference to the next
 // word (DELTA_W bits), and the other bits of f interpolate linearly between the two.

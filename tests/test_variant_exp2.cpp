@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -32,7 +33,8 @@ constexpr double ln2 = 0.69314718055994531;
 /// adds ½ LSB of the result.
 double unit_bound(const Exp2Organisation& o) {
   const double h = std::ldexp(1.0, -o.addr_bits);
-  return (ln2 * ln2 / 4 * h * h + std::ldexp(1.0, -o.value_frac_bits)) / 2 + std::ldexp(0.5, -o.out_frac_bits);
+  return (ln2 * ln2 / 4 * h * h + std::ldexp(1.0, -o.value_frac_bits)) / 2 +
+         std::ldexp(0.5, -o.out_frac_bits);
 }
 
 /// The lobe's bound at (cos, n): multiplier 39 rounds (½ LSB), ROM 38's word is within
@@ -71,10 +73,23 @@ TEST(Exp2Unit, ExactAtZeroAndAtIntegers) {
   const Exp2Table unit;
   EXPECT_EQ(unit.pow2(0), code_t{1} << 22);
   EXPECT_EQ(unit.pow2(code_t{1} << 22), code_t{1} << 22) << "x > 0 reads as 0";
-  for (int k = 1; k <= 22; ++k) EXPECT_EQ(unit.pow2(-(code_t{k} << 22)), code_t{1} << (22 - k)) << "x = −" << k;
+  for (int k = 1; k <= 22; ++k)
+    EXPECT_EQ(unit.pow2(-(code_t{k} << 22)), code_t{1} << (22 - k)) << "x = −" << k;
   EXPECT_EQ(unit.pow2(-(code_t{23} << 22)), 1) << "2^−23 = ½ LSB rounds up";
   EXPECT_EQ(unit.pow2(-(code_t{24} << 22)), 0);
   EXPECT_EQ(unit.pow2(-(code_t{16384} << 22)), 0) << "register 9's most negative code";
+}
+
+TEST(Exp2Unit, TheTableFitsTheVerilogUnitsWords) {
+  // rtl/exp2_unit.v's defaults: 2^9 words of VALUE_FRAC = 24 + DELTA_W = 16 bits. The largest
+  // difference, 2^25·(1 − 2^(−1/512)) ≈ 45 400, needs 16 bits.
+  const Exp2Table unit;
+  EXPECT_EQ(unit.words().size(), 512u);
+  EXPECT_EQ(unit.delta_bits(), 16);
+  EXPECT_EQ(unit.word_bits(), 40);
+  // Word 0 is {2^0 − 1 = 0, round(2^(1/512)·2^24) − 2^24}.
+  EXPECT_EQ(unit.words()[0],
+            static_cast<std::uint64_t>(std::llround(std::exp2(1.0 / 512) * (1 << 24)) - (1 << 24)));
 }
 
 TEST(Exp2Unit, RefusesAnOrganisationItCannotBuild) {
@@ -130,8 +145,8 @@ TEST(VariantExp2, CosOneGivesKOfNForEveryN) {
   for (unsigned n = n_min; n <= n_max; ++n) {
     ASSERT_EQ(variant.cos_pow_n(operands(cos_one, n)), code_t{1} << 22) << "1^n = 1, n " << n;
     const double k = reference::k(n, Normalisation::patent);
-    ASSERT_LE(std::fabs(variant.run(operands(cos_one, n)).lobe * lobe_lsb - k), 0.5 * lobe_lsb + std::ldexp(1.0, -17))
-        << "n " << n;
+    const double error = std::fabs(variant.run(operands(cos_one, n)).lobe * lobe_lsb - k);
+    ASSERT_LE(error, 0.5 * lobe_lsb + std::ldexp(1.0, -17)) << "n " << n;
   }
 }
 
@@ -151,7 +166,8 @@ TEST(VariantExp2, NThousandOnEveryCode) {
   const double k = reference::k(1000, Normalisation::patent);
   for (code_t c = 0; c <= cos_one; ++c) {
     const double cos_q = c * std::ldexp(1.0, -16);
-    const double error = std::fabs(variant->run(operands(c, 1000)).lobe * lobe_lsb - k * reference::exact_lobe(cos_q, 1000));
+    const double want = k * reference::exact_lobe(cos_q, 1000);
+    const double error = std::fabs(variant->run(operands(c, 1000)).lobe * lobe_lsb - want);
     ASSERT_LE(error, lobe_bound(cos_q, 1000, k)) << "cos code " << c;
   }
   // The last code below 1.0: 2^(1000·log2(1 − 2^−16)) = 0.98486, K(1000)·that on S10.20.
@@ -165,8 +181,8 @@ TEST(VariantExp2, TakesTheNormalisationsOfROM38sBanks0To2) {
     config.normalisation = policy;
     const auto variant = variants::make_variant("exp2", config);
     const double k = reference::k(500, policy);
-    EXPECT_NEAR(variant->run(operands(cos_one, 500)).lobe * lobe_lsb, k, 0.5 * lobe_lsb + std::ldexp(1.0, -17))
-        << to_string(policy);
+    const double got = variant->run(operands(cos_one, 500)).lobe * lobe_lsb;
+    EXPECT_NEAR(got, k, 0.5 * lobe_lsb + std::ldexp(1.0, -17)) << to_string(policy);
   }
 }
 

@@ -44,8 +44,8 @@ VariantResult Exp2Variant::run(const Operands& in) const {
   // The compile-time multipliers skip overflow checks: operands must be on their buses.
   const DefaultFormats f;
   if (in.cos < 0 || in.cos > f.cos.one() || in.n < 0 || in.n > f.n.max_code())
-    throw std::out_of_range("variant exp2: cos code " + std::to_string(in.cos) + " or n " + std::to_string(in.n) +
-                            " outside [0, " + std::to_string(f.cos.one()) + "], [0, " +
+    throw std::out_of_range("variant exp2: cos code " + std::to_string(in.cos) + " or n " +
+                            std::to_string(in.n) + " outside [0, " + std::to_string(f.cos.one()) + "], [0, " +
                             std::to_string(f.n.max_code()) + "]");
   for (code_t intensity : in.rgb)
     if (intensity < 0 || intensity > f.rgb.max_code())

@@ -1,7 +1,7 @@
-// The exp2 unit (rtl/exp2_unit.v): 2^x for x ≤ 0, the usual hardware exp2 (Piñeiro,
-// Oberman et al., "High-speed function approximation using a minimax quadratic
-// interpolator", IEEE Trans. Computers 54(3), 2005; Oberman, AMD K7 3DNow! exp2/log2,
-// ARITH-14, 1999): x splits into its integer part, a right shift, and its fraction
+// The exp2 unit (rtl/exp2_unit.v): 2^x for x ≤ 0, the usual hardware exp2 (Tang, ACM
+// TOMS 15(2), 1989; Oberman and Siu, "A high-performance area-efficient multifunction
+// interpolator", ARITH-17, 2005; Piñeiro, Oberman, Muller and Bruguera, IEEE Trans.
+// Computers 54(3), 2005): x splits into its integer part, a right shift, and its fraction
 // f ∈ [0, 1), whose 2^f ∈ [1, 2) comes from a table of 2^(i/2^A) and a linear
 // interpolation between neighbouring words. It is what a GPU's pow(c, n) does with
 // the log2 it already has: c^n = 2^(n·log2 c).
@@ -45,7 +45,8 @@ class Exp2Table {
     const std::uint64_t value = (std::uint64_t{1} << org_.value_frac_bits) | (word >> delta_bits_);
     const std::uint64_t delta = word & delta_mask_;
     const std::uint64_t t = f & low_mask_;
-    const std::uint64_t m = value + (low_bits_ > 0 ? (delta * t + (std::uint64_t{1} << (low_bits_ - 1))) >> low_bits_ : 0);
+    const std::uint64_t half = low_bits_ > 0 ? std::uint64_t{1} << (low_bits_ - 1) : 0;
+    const std::uint64_t m = value + ((delta * t + half) >> low_bits_);
     // A shift past max_shift_ leaves 0 either way: the hardware saturates the amount.
     const code_t shift = k + org_.value_frac_bits - org_.out_frac_bits;
     const int s = static_cast<int>(shift < max_shift_ ? shift : max_shift_);

@@ -188,6 +188,22 @@ TEST(VariantUs5739820, RefusesConfigsItIsNotBuiltFor) {
   expect_refused(energy, "device_energy (allowed: patent, energy, none");
 }
 
+// The unrolled version squares or passes y on at each stage: the same bits, its own name.
+TEST(VariantUs5739820, PipelinedIsTheSameArithmetic) {
+  const auto sequential = make_variant("us5739820");
+  const auto pipelined = make_variant("us5739820_pipelined");
+  EXPECT_EQ(pipelined->name(), "us5739820_pipelined");
+  for (long n = 1; n <= 1000; n += 37)
+    for (long c = 0; c <= cos_one; c += 997) {
+      const auto a = run(*sequential, c, n), b = run(*pipelined, c, n);
+      ASSERT_EQ(a.lobe, b.lobe) << "cos code " << c << ", n " << n;
+      ASSERT_EQ(a.out, b.out) << "cos code " << c << ", n " << n;
+    }
+  Config literal;
+  literal.saturation = Saturation::literal;
+  EXPECT_THROW(make_variant("us5739820_pipelined", literal), std::invalid_argument);
+}
+
 TEST(VariantUs5739820, RefusesOperandsOffTheirBuses) {
   const auto v = make_variant("us5739820");
   EXPECT_THROW(run(*v, cos_one + 1, 1), std::out_of_range);

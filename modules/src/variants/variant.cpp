@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "specular/variants/us5739820.h"
+#include "specular/variants/us5739820_pipelined.h"
 
 namespace specular {
 namespace variants {
@@ -18,6 +19,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
       {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
+      {"us5739820_pipelined", [](const Config& c) { return std::make_unique<Us5739820Pipelined>(c); }},
   };
   return table;
 }

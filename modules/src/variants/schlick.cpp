@@ -15,15 +15,15 @@ const Config& checked(const Config& config) {
     if (config.widths.*field.member != defaults.*field.member)
       throw std::invalid_argument(std::string("schlick: width ") + field.name + " = " +
                                   std::to_string(config.widths.*field.member) +
-                                  " is not built (the default widths only: " + field.name + " = " +
+                                  " is not built (allowed: the default, " + field.name + " = " +
                                   std::to_string(defaults.*field.member) + ")");
   if (config.constants != Constants::patent)
     throw std::invalid_argument(std::string("schlick: constants '") + to_string(config.constants) +
-                                "' are not built (only 'patent': no pins 19/20 here, s = 1)");
+                                "' are not built (allowed: patent; no pins 19/20 here, s = 1)");
   if (config.normalisation == Normalisation::device_energy)
     throw std::invalid_argument(std::string("schlick: normalisation '") + to_string(config.normalisation) +
-                                "' is not built (its K is the patent lobe's integral; allowed: patent, "
-                                "energy, none)");
+                                "' is not built (allowed: patent, energy, none; its K is the patent "
+                                "lobe's own integral)");
   return config;
 }
 

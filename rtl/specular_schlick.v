@@ -38,9 +38,8 @@ module specular_schlick #(
   assign ready = 1'b1;                 // a pipeline: never busy
 
   // ---- stage 1: the denominator and its normalisation, from the sampled operands ----
-  wire [N_BITS-1:0] n_minus_1 = n - 1'b1;
-  wire [D_W-1:0] n_cos = {{(D_W-N_BITS){1'b0}}, n_minus_1} * {{(D_W-COS_W){1'b0}}, cos};
-  wire [D_W-1:0] denominator = {n, {COS_FRAC{1'b0}}} - n_cos;
+  wire [D_W-1:0] denominator;
+  schlick_denominator #(.COS_FRAC(COS_FRAC), .N_BITS(N_BITS)) denom (.cos(cos), .n(n), .d(denominator));
   wire [POS_W-1:0] d_msb;
   wire [D_W-1:0] d_normalised;
   leading_one_normaliser #(.W(D_W)) lod (.x(denominator), .msb(d_msb), .normalised(d_normalised));

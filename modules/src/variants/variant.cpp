@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "specular/variants/schlick.h"
+#include "specular/variants/schlick_divider.h"
 
 namespace specular {
 namespace variants {
@@ -18,6 +19,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
       {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
+      {"schlick_divider", [](const Config& c) { return std::make_unique<SchlickDivider>(c); }},
   };
   return table;
 }

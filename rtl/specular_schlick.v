@@ -1,8 +1,8 @@
 // Variant schlick (issue 26, docs/variants/schlick.md) behind the common ports
 // (docs/design_space.md, "Conventions"): cos^n by Schlick's rational approximation
 // x / (n - (n-1)*x) instead of the patent's two log2 passes, then the device's own tail
-// (ROM 38, multiplier 39, multipliers 13-15). A pipeline: a start on every clock, each
-// result valid three clocks after its start's edge.
+// (ROM 38, multiplier 39, multipliers 13-15). A pipeline: a start on every clock; a
+// start taken at edge t is in register 9 at edge t+2, valid in the clock after it.
 //   stage 1: d = n*2^16 - (n-1)*cos (U10.16, exact), normalised by a leading-one detector
 //   stage 2: y1 ~ 2^26/m by reciprocal_nr (1024-word table, one Newton-Raphson step)
 //   stage 3: register 9 = cos*y1 / 2^(msb+4), rounded half up: x/d as S14.22
@@ -38,9 +38,8 @@ module specular_schlick #(
   assign ready = 1'b1;                 // a pipeline: never busy
 
   // ---- stage 1: the denominator and its normalisation, from the sampled operands ----
-  wire [N_BITS-1:0] n_minus_1 = n - 1'b1;
-  wire [D_W-1:0] n_cos = {{(D_W-N_BITS){1'b0}}, n_minus_1} * {{(D_W-COS_W){1'b0}}, cos};
-  wire [D_W-1:0] denominator = {n, {COS_FRAC{1'b0}}} - n_cos;
+  wire [D_W-1:0] denominator;
+  schlick_denominator #(.COS_FRAC(COS_FRAC), .N_BITS(N_BITS)) denom (.cos(cos), .n(n), .d(denominator));
   wire [POS_W-1:0] d_msb;
   wire [D_W-1:0] d_normalised;
   leading_one_normaliser #(.W(D_W)) lod (.x(denominator), .msb(d_msb), .normalised(d_normalised));

@@ -6,31 +6,28 @@
 
 namespace specular {
 namespace variants {
-namespace {
 
-/// The configuration a Schlick unit is built for, or std::invalid_argument naming why not.
-const Config& checked(const Config& config) {
+const Config& schlick_config(const Config& config, std::string_view variant) {
+  const std::string name(variant);
   const Widths defaults{};
   for (const WidthField& field : width_fields())
     if (config.widths.*field.member != defaults.*field.member)
-      throw std::invalid_argument(std::string("schlick: width ") + field.name + " = " +
+      throw std::invalid_argument(name + ": width " + field.name + " = " +
                                   std::to_string(config.widths.*field.member) +
-                                  " is not built (the default widths only: " + field.name + " = " +
+                                  " is not built (allowed: the default, " + field.name + " = " +
                                   std::to_string(defaults.*field.member) + ")");
   if (config.constants != Constants::patent)
-    throw std::invalid_argument(std::string("schlick: constants '") + to_string(config.constants) +
-                                "' are not built (only 'patent': no pins 19/20 here, s = 1)");
+    throw std::invalid_argument(name + ": constants '" + to_string(config.constants) +
+                                "' are not built (allowed: patent; no pins 19/20 here, s = 1)");
   if (config.normalisation == Normalisation::device_energy)
-    throw std::invalid_argument(std::string("schlick: normalisation '") + to_string(config.normalisation) +
-                                "' is not built (its K is the patent lobe's integral; allowed: patent, "
-                                "energy, none)");
+    throw std::invalid_argument(name + ": normalisation '" + to_string(config.normalisation) +
+                                "' is not built (allowed: patent, energy, none; its K is the patent "
+                                "lobe's own integral)");
   return config;
 }
 
-}  // namespace
-
 Schlick::Schlick(const Config& config)
-    : rom38_(Formats(checked(config).widths), config) {}
+    : rom38_(Formats(schlick_config(config, "schlick").widths), config) {}
 
 std::uint64_t Schlick::denominator(code_t cos, code_t n) {
   return (static_cast<std::uint64_t>(n) << DefaultFormats::cos.frac_bits) -
@@ -47,10 +44,14 @@ code_t Schlick::cos_power(code_t cos, code_t n) const {
   return static_cast<code_t>((product + (std::uint64_t{1} << (shift - 1))) >> shift);
 }
 
-VariantResult Schlick::run(const Operands& in) const {
+void Schlick::check_operands(const Operands& in, std::string_view variant) {
   if (in.n < 1 || in.n > 1000 || in.cos < 0 || in.cos > (code_t{1} << DefaultFormats::cos.frac_bits))
-    throw std::out_of_range("schlick: operands cos code " + std::to_string(in.cos) + ", n " +
-                            std::to_string(in.n) + " outside cos 0..65536, n 1..1000");
+    throw std::out_of_range(std::string(variant) + ": operands cos code " + std::to_string(in.cos) +
+                            ", n " + std::to_string(in.n) + " outside cos 0..65536, n 1..1000");
+}
+
+VariantResult Schlick::run(const Operands& in) const {
+  check_operands(in, name());
   const DefaultFormats f;
   VariantResult result;
   result.lobe = arith::mul39(f, cos_power(in.cos, in.n), rom38_.k(in.n));

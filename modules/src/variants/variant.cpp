@@ -11,6 +11,7 @@
 #include "specular/variants/us5739820.h"
 #include "specular/variants/schlick.h"
 #include "specular/variants/us5739820_pipelined.h"
+#include "specular/variants/schlick_divider.h"
 
 namespace specular {
 namespace variants {
@@ -28,6 +29,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
       {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
       {"us5739820_pipelined", [](const Config& c) { return std::make_unique<Us5739820Pipelined>(c); }},
+      {"schlick_divider", [](const Config& c) { return std::make_unique<SchlickDivider>(c); }},
   };
   return table;
 }

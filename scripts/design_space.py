@@ -85,11 +85,11 @@ def sci(v):
 
 def table(designs, front_area, front_tput):
     lines = [
-        "| design | logic (µm²) | ROM macros (µm²) | total (mm²) | die est. (mm²) | flip-flops | "
+        "| design | logic (µm²) | ROM macros (µm²) | total (mm²) | total, one ROM 38 bank (mm²) | die est. (mm²) | flip-flops | "
         "T_sta (ns) | T_sim (ns) | clocks / result | latency (clocks) | latency (ns) | "
         "results/s streamed | results/s per mm² (die) | lobe max \\|err\\| (at cos code, n) | "
         "lobe mean \\|err\\| | pins max \\|err\\| | pins mean \\|err\\| | gate level at 1.1 T_sim | Pareto |",
-        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---|---|"]
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---|---|"]
     for i, d in enumerate(designs):
         s, e = d["summary"], d["error"] or {}
         at = e.get("lobe_max_at")
@@ -103,7 +103,8 @@ def table(designs, front_area, front_tput):
         marks = [m for m, f in (("area", front_area), ("throughput/mm²", front_tput)) if i in f]
         lines.append(
             f"| {d['label']} | {num(s['area_logic_um2'], 0)} | {num(s['area_macros_um2'], 0)} | "
-            f"{s['area_total_um2'] / 1e6:.3f} | {s['die_area_estimate_mm2']:.3f} | {s['flip_flops']} | "
+            f"{s['area_total_um2'] / 1e6:.3f} | {s['area_total_one_rom38_bank_um2'] / 1e6:.3f} | "
+            f"{s['die_area_estimate_mm2']:.3f} | {s['flip_flops']} | "
             f"{s['t_sta_ns']:.2f} | {num(s.get('t_sim_ns'), 1)} | {cpr_text} | "
             f"{num(s.get('latency_clocks'), 1)} | {num(s.get('latency_ns_at_t_sta'), 1)} | "
             f"{s['results_per_second_streamed_at_t_sta'] / 1e6:.1f} M | "

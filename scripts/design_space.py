@@ -144,14 +144,16 @@ def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where
         on = i in front
         ax.scatter([xs[i]], [ys[i]], s=60 if on else 36, marker="o" if on else "s",
                    color="tab:red" if on else "tab:blue", zorder=3)
-        ax.annotate(d["label"], (xs[i], ys[i]), textcoords="offset points", xytext=(6, 4),
-                    fontsize=8)
+        # labels of near points staggered (the devices sit on top of each other)
+        ax.annotate(d["label"], (xs[i], ys[i]), textcoords="offset points",
+                    xytext=(6, (4, -11, 15, -22)[i % 4]), fontsize=8)
     pts = sorted((xs[i], ys[i]) for i in front)
     if len(pts) > 1:
         ax.step([p[0] for p in pts], [p[1] for p in pts], where=where, color="tab:red",
                 linestyle="--", linewidth=1, label="Pareto front")
         ax.legend(loc="best", fontsize=8)
     ax.set_yscale("log")
+    ax.margins(x=0.2, y=0.15)
     if x_log:
         ax.set_xscale("log")
     ax.set_xlabel(xlabel)

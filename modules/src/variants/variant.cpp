@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "specular/variants/one_pass.h"
+
 namespace specular {
 namespace variants {
 namespace {
@@ -15,6 +17,8 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
+      {"one_pass", [](const Config& c) { return std::make_unique<OnePass>(c, false); }},
+      {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
   };
   return table;
 }

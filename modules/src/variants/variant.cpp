@@ -1,6 +1,8 @@
 // The variants' registry: one line per variant (name, factory), the patent's first.
 #include "specular/variants/variant.h"
 
+#include "specular/variants/exp2.h"
+
 #include <functional>
 #include <stdexcept>
 #include <utility>
@@ -19,6 +21,7 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       // Issue 26's variants register here, one line each.
       {"one_pass", [](const Config& c) { return std::make_unique<OnePass>(c, false); }},
       {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
+      {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
   };
   return table;
 }

@@ -253,5 +253,12 @@ inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
   }
 }
 
+// ---- Squarer (design variant us5739820: US 5,739,820's repeated squaring) ---------
+/// y² for a code y of the unsigned format U1.F (0 ≤ y ≤ 1): F fraction bits dropped,
+/// rounding half up (multiply_round_saturate; y² ≤ 1 never saturates). rtl/squarer.v.
+inline code_t square(const FixedFormat& format, code_t y) {
+  return multiply_round_saturate(format, y, y, format.frac_bits);
+}
+
 }  // namespace arith
 }  // namespace specular

@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "specular/variants/one_pass.h"
+#include "specular/variants/us5739820.h"
+#include "specular/variants/us5739820_pipelined.h"
 
 namespace specular {
 namespace variants {
@@ -22,6 +24,8 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"one_pass", [](const Config& c) { return std::make_unique<OnePass>(c, false); }},
       {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
       {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
+      {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
+      {"us5739820_pipelined", [](const Config& c) { return std::make_unique<Us5739820Pipelined>(c); }},
   };
   return table;
 }

@@ -1,10 +1,13 @@
 // The variants' registry: one line per variant (name, factory), the patent's first.
 #include "specular/variants/variant.h"
 
+#include "specular/variants/exp2.h"
+
 #include <functional>
 #include <stdexcept>
 #include <utility>
 
+#include "specular/variants/one_pass.h"
 #include "specular/variants/schlick.h"
 #include "specular/variants/schlick_divider.h"
 
@@ -18,6 +21,9 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
+      {"one_pass", [](const Config& c) { return std::make_unique<OnePass>(c, false); }},
+      {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
+      {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
       {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
       {"schlick_divider", [](const Config& c) { return std::make_unique<SchlickDivider>(c); }},
   };

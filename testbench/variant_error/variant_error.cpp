@@ -218,7 +218,7 @@ mean |lobe - K(n)*cos^n| (multiplier 39's S10.20) and |pin - K(n)*cos^n*255| (pi
 S18.13, every channel), each max with its (cos code, n), the operation count and wall
 seconds; for the patent's device also against its own formula K(n)*A in double
 ("patent_formula"). --shard I/N runs the n with (n - 1) mod N == I and writes the partial
-result to --partial FILE; --merge adds a complete set of them up into the unsharded run's
+result to --partial FILE (without --shard: the whole run's, shard 0/1); --merge adds a complete set of them up into the unsharded run's
 figures, bit for bit (seconds: the shards' sum).
 
 Exit status: 0 done; 2 bad option, name or partial set; 3 internal error.
@@ -243,7 +243,7 @@ void print_text(std::ostream& out, const VariantError& e) {
     print_measure(out, "|lobe - K(n)*A| (formula)", e.formula_lobe);
     print_measure(out, "|out - K(n)*A*255| (formula)", e.formula_out);
   }
-  out << "  " << std::fixed << std::setprecision(2) << e.seconds << " s\n" << std::defaultfloat;
+  out << "  wall " << std::fixed << std::setprecision(2) << e.seconds << " s\n" << std::defaultfloat;
 }
 
 void write_json(const std::string& path, const Json& json) {
@@ -318,8 +318,8 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
     if (name.empty()) throw UsageError("give a variant's NAME (one of: " + variant_list() + ")");
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw UsageError("unknown variant '" + name + "' (known: " + variant_list() + ")");
-    if (shard_given != !partial_path.empty())
-      throw UsageError("--shard I/N and --partial FILE go together (a shard's figures are merged from its file)");
+    if (shard_given && partial_path.empty())
+      throw UsageError("--shard I/N needs --partial FILE (a shard's figures are merged from its file)");
     if (range.shard.count > range.n_last - range.n_first + 1)
       throw UsageError("--shard: N = " + std::to_string(range.shard.count) + " is more than the run's " +
                        std::to_string(range.n_last - range.n_first + 1) + " values of n (split by n)");

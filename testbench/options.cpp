@@ -397,14 +397,14 @@ Output:
   specular_tb --merge FILE... [--format text|json] [--output FILE] [--partial FILE]
                             merge every shard's partial into the unsharded run's report
                             (refuses a missing, duplicated or mismatched shard)
-  --variant NAME            run design variant NAME's C++ model (issue 26,
-                            docs/design_space.md) instead of the device, one of:
-                            )" + variant_list() + R"(; the same stimuli, reports and
-                            shards. Its lobe is the norm column; out_*_ref are
-                            norm_exact*R, G, B; approx is not checked (no register 9).
-                            Report only: every computation passes (no bound is the
-                            variants' common one; each variant's own is in
-                            docs/variants/NAME.md). Not with --model, --vcd,
+  --variant NAME            a design variant's C++ model instead of the device
+                            (issue 26, docs/design_space.md); NAME one of:
+                            )" + variant_list() + R"(
+                            The same stimuli, reports and shards; the lobe is the
+                            norm column, out_*_ref = norm_exact*R, G, B, approx is
+                            not measured (no register 9), cycles 0 (no clock).
+                            Report only: every computation passes (each variant's
+                            bound: docs/variants/NAME.md). Not with --model, --vcd,
                             --trace-ops, --trace-failures, --clock-period
   --help                    this text
 

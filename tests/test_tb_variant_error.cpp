@@ -131,6 +131,16 @@ TEST(VariantError, BadCommandLinesAreRefused) {
   EXPECT_EQ(run({"patent", "--n", "5:2"}).status, 2);
   EXPECT_EQ(run({"patent", "--shard", "0/2"}).status, 2);  // without --partial
   EXPECT_EQ(run({}).status, 2);
+  // --all: every registered variant, in registry order, as a JSON array.
+  const std::string all = (scratch_subdir("all") / "all.json").string();
+  ASSERT_EQ(run({"--all", "--n", "7:7", "--json", all}).status, 0);
+  const nlohmann::json array = read_json(all);
+  ASSERT_EQ(array.size(), variants::variant_names().size());
+  for (std::size_t i = 0; i < array.size(); ++i) {
+    EXPECT_EQ(array[i].at("name"), variants::variant_names()[i]);
+    EXPECT_EQ(array[i].at("operations"), 65537);
+  }
+  EXPECT_EQ(run({"--all", "--shard", "0/2"}).status, 2);
   const ToolRun list = run({"--list"});
   EXPECT_EQ(list.status, 0);
   EXPECT_EQ(list.out.substr(0, 7), "patent\n");

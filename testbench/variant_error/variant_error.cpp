@@ -210,6 +210,8 @@ std::string help_text() {
 Usage:
   specular_variant_error NAME [--json FILE] [--n FIRST:LAST] [--shard I/N --partial FILE]
   specular_variant_error --merge FILE... [--json FILE]
+  specular_variant_error --all [--json FILE] [--n FIRST:LAST]
+                                         every registered variant in turn (JSON: an array)
   specular_variant_error --list          the registered variants' names, one a line
 
 Runs variant NAME's C++ model on every cos code 0..65536 (U1.16) x every n in FIRST..LAST
@@ -252,6 +254,20 @@ void write_json(const std::string& path, const Json& json) {
   file.commit();
 }
 
+/// --n FIRST:LAST, 1 <= FIRST <= LAST <= 1000.
+ErrorSweepRange parse_n_range(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  if (colon == std::string::npos) throw UsageError("--n: '" + text + "' is not FIRST:LAST (e.g. 1:1000)");
+  const long long first = parse_integer(text.substr(0, colon), "FIRST", "[1, 1000]");
+  const long long last = parse_integer(text.substr(colon + 1), "LAST", "[FIRST, 1000]");
+  if (first < 1 || last > 1000 || first > last)
+    throw UsageError("--n: " + text + " is not FIRST:LAST with 1 <= FIRST <= LAST <= 1000");
+  ErrorSweepRange range;
+  range.n_first = static_cast<unsigned>(first);
+  range.n_last = static_cast<unsigned>(last);
+  return range;
+}
+
 std::string variant_list() {
   std::string list;
   for (const std::string& name : variants::variant_names()) list += (list.empty() ? "" : ", ") + name;
@@ -267,6 +283,29 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
   if (args.front() == "--list") {
     if (args.size() > 1) throw UsageError("--list takes nothing else");
     for (const std::string& name : variants::variant_names()) out << name << '\n';
+    return 0;
+  }
+  if (args.front() == "--all") {  // every registered variant, one after the other
+    std::string json_path;
+    ErrorSweepRange range;
+    for (std::size_t i = 1; i < args.size(); ++i) {
+      if (i + 1 >= args.size()) throw UsageError("--all: option " + args[i] + " needs a value (allowed: --json FILE, --n FIRST:LAST)");
+      if (args[i] == "--json") json_path = args[++i];
+      else if (args[i] == "--n") range = parse_n_range(args[++i]);
+      else throw UsageError("--all: unknown option '" + args[i] + "' (allowed: --json FILE, --n FIRST:LAST)");
+    }
+    std::optional<AtomicOutputStream> file;
+    if (!json_path.empty()) file.emplace(json_path, "--json");
+    Json all = Json::array();
+    for (const std::string& name : variants::variant_names()) {
+      const VariantError e = measure_variant_error(name, range);
+      print_text(out, e);
+      all.push_back(variant_error_json(e));
+    }
+    if (file) {
+      file->stream() << all.dump(2) << '\n';
+      file->commit();
+    }
     return 0;
   }
   const bool merge = args.front() == "--merge";
@@ -290,15 +329,9 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
       range.shard = parse_shard(value());
       shard_given = true;
     } else if (!merge && a == "--n") {
-      const std::string text = value();
-      const std::size_t colon = text.find(':');
-      if (colon == std::string::npos) throw UsageError("--n: '" + text + "' is not FIRST:LAST (e.g. 1:1000)");
-      const long long first = parse_integer(text.substr(0, colon), "FIRST", "[1, 1000]");
-      const long long last = parse_integer(text.substr(colon + 1), "LAST", "[FIRST, 1000]");
-      if (first < 1 || last > 1000 || first > last)
-        throw UsageError("--n: " + text + " is not FIRST:LAST with 1 <= FIRST <= LAST <= 1000");
-      range.n_first = static_cast<unsigned>(first);
-      range.n_last = static_cast<unsigned>(last);
+      const Shard shard = range.shard;
+      range = parse_n_range(value());
+      range.shard = shard;
     } else if (a.rfind("--", 0) == 0) {
       throw UsageError("unknown option '" + a + "'" +
                        (merge ? " after --merge (allowed: --json FILE)" : " (see --help)"));

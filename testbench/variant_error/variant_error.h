@@ -71,7 +71,7 @@ Json variant_error_partial(const VariantError& e);
 VariantError merge_variant_error(const std::vector<std::string>& files);
 
 /// The command line: `NAME [--json FILE] [--n FIRST:LAST] [--shard I/N --partial FILE]`,
-/// `--merge FILE... [--json FILE]`, `--list`, `--help`. Returns the exit status.
+/// `--merge FILE... [--json FILE]`, `--all [--json FILE] [--n FIRST:LAST]`, `--list`, `--help`. Returns the exit status.
 int run_variant_error(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace tb

@@ -9,7 +9,8 @@
 //
 //   specular_romgen --out-dir DIR [--bank-bits B] [--width NAME=VALUE]...
 //       writes DIR/rom5.hex (2^rom5_addr_bits words) and DIR/rom38.hex (2^B banks of
-//       2^n_bits words; bank b = Normalisation value b, unused banks zero)
+//       2^n_bits words; bank b = Normalisation value b, unused banks zero), DIR/pins.hex
+//       and DIR/exp2.hex (variant exp2's exp2 unit, rtl/exp2_unit.v)
 //   specular_romgen --check DUMP [--bank-bits B] [--width NAME=VALUE]...
 //       compares every "rom5 BUS LOG2" and "rom38 BANK N K" line (hex) of DUMP with the
 //       tables; exit 1 on the first difference or when an address was never read
@@ -28,6 +29,7 @@
 #include "specular/rom_images.h"
 #include "specular/constants.h"
 #include "specular/format.h"
+#include "specular/variants/exp2_unit.h"
 
 namespace {
 
@@ -148,6 +150,16 @@ void write_images(const Options& o) {
               "pins 19 (h, " + f.mux4.name() + ") and 20 (a, " + f.reg9.name() +
                   "): words 2c, 2c+1 for Constants value c",
               64, words);
+
+  // Variant exp2's exp2 unit (rtl/exp2_unit.v): 2^(i/2^A) and the difference to the next
+  // word. Its organisation is the unit's own, the same in every width set.
+  const specular::variants::Exp2Table exp2;
+  write_image(o.out_dir + "/exp2.hex",
+              "exp2 unit: " + std::to_string(exp2.words().size()) + " words x " +
+                  std::to_string(exp2.word_bits()) + " bits {2^(i/2^A) - 1 on " +
+                  std::to_string(exp2.organisation().value_frac_bits) + " fraction bits, difference to the next on " +
+                  std::to_string(exp2.delta_bits()) + " bits}",
+              exp2.word_bits(), exp2.words());
 }
 
 std::uint64_t parse_hex(const std::string& text, const std::string& where) {

@@ -1,9 +1,13 @@
 // The variants' registry: one line per variant (name, factory), the patent's first.
 #include "specular/variants/variant.h"
 
+#include "specular/variants/exp2.h"
+
 #include <functional>
 #include <stdexcept>
 #include <utility>
+
+#include "specular/variants/one_pass.h"
 
 namespace specular {
 namespace variants {
@@ -15,6 +19,9 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
   static const std::vector<std::pair<std::string, Factory>> table = {
       {"patent", [](const Config& c) { return std::make_unique<PatentDevice>(c); }},
       // Issue 26's variants register here, one line each.
+      {"one_pass", [](const Config& c) { return std::make_unique<OnePass>(c, false); }},
+      {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
+      {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
   };
   return table;
 }

@@ -57,7 +57,9 @@ VariantError measure_variant_error(const std::string& name, const ErrorSweepRang
   VariantError e;
   e.name = name;
   e.range = range;
-  e.has_formula = name == "patent";  // the formula is the patent device's own reference
+  // Every variant also against the patent's formula: the reference of those that compute
+  // it (patent, one_pass), the others' distance from it.
+  e.has_formula = true;
   const long long codes = 1LL << formats.cos.frac_bits;  // cos 1.0: codes 0..2^16
   const double cos_lsb = formats.cos.lsb(), norm_lsb = formats.norm.lsb(), out_lsb = formats.out.lsb();
   constexpr double intensity = 255;
@@ -218,8 +220,8 @@ Runs variant NAME's C++ model on every cos code 0..65536 (U1.16) x every n in FI
 (default 1:1000) at the default configuration and R = G = B = 255, and reports max and
 mean |lobe - K(n)*cos^n| (multiplier 39's S10.20) and |pin - K(n)*cos^n*255| (pins 24-26,
 S18.13, every channel), each max with its (cos code, n), the operation count and wall
-seconds; for the patent's device also against its own formula K(n)*A in double
-("patent_formula"). --shard I/N runs the n with (n - 1) mod N == I and writes the partial
+seconds; also against the patent's formula K(n)*A in double ("patent_formula": the
+reference of the variants that compute it, the others' distance from it). --shard I/N runs the n with (n - 1) mod N == I and writes the partial
 result to --partial FILE (without --shard: the whole run's, shard 0/1); --merge adds a complete set of them up into the unsharded run's
 figures, bit for bit (seconds: the shards' sum).
 

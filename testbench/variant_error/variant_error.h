@@ -1,8 +1,8 @@
 // A design variant's exhaustive error (issue 26): every cos code 0..65536 × every n of
 // a range (1..1000 by default) at the default configuration and R = G = B = 255, the
 // variant's lobe against K(n)·cos_q^n and its pins 24–26 against K(n)·cos_q^n·255:
-// max and mean |error| and where the max occurs. For the patent's device also against
-// its own formula in double (the references of docs/accuracy.md).
+// max and mean |error| and where the max occurs; also against the patent's formula in
+// double (docs/accuracy.md's norm_ref: the reference of the variants that compute it).
 //
 // Sharded by n as specular_tb --sweep is ((n − 1) mod N == I), with partial results
 // that merge into exactly the unsharded run's figures: each n's sums are kept apart and
@@ -50,7 +50,7 @@ struct VariantError {
   std::uint64_t operations = 0;
   ErrorMeasure lobe;          ///< |lobe − K(n)·cos_q^n|
   ErrorMeasure out;           ///< |pin − K(n)·cos_q^n·255|, each of pins 24–26
-  bool has_formula = false;   ///< the patent's device: also against its formula
+  bool has_formula = false;   ///< also against the patent's formula (every run; a partial says)
   ErrorMeasure formula_lobe;  ///< |lobe − norm_ref| (K(n)·A in double)
   ErrorMeasure formula_out;   ///< |pin − out_ref|
   double seconds = 0;         ///< wall time (a merge: the shards' sum)
@@ -61,7 +61,7 @@ struct VariantError {
 VariantError measure_variant_error(const std::string& name, const ErrorSweepRange& range);
 
 /// The report: name, lobe_max_abs, lobe_mean_abs, lobe_max_at {cos_code, n}, out_…,
-/// operations, seconds (and "patent_formula" with the same fields for the patent).
+/// operations, seconds, and "patent_formula" with the same fields against K(n)·A.
 Json variant_error_json(const VariantError& e);
 
 /// A shard's partial result: settings (name, n range), shard, the measures with their

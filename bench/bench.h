@@ -66,6 +66,8 @@ double now_seconds();
 /// `name`: pow, or pow_end (the yardstick measured again after every model).
 void measure_pow(const Plan& plan, const std::string& name);
 void measure_core(const Plan& plan);
+/// A design variant's C++ model (issue 26): figures variant_NAME_rate, _checksum, …
+void measure_variant(const Plan& plan, const std::string& variant_name);
 /// specular_tb's rows with the core model: core, comparison and the CSV (or JSON) writer.
 void measure_rows(const Plan& plan, const std::string& name, bool json);
 /// What the pin-level device writes to plan.vcd_path while it runs.

@@ -7,6 +7,8 @@
 //                                        every figure as median [min..max], every target
 //                                        met, not met or within noise (summary.h)
 //   specular_bench --model NAME [...]    one model in this process (what a child runs)
+//   specular_bench --variants [...]      std::pow, the core and the design variants'
+//                                        C++ models only (variant_NAME_vs_core)
 //   specular_bench --list                the model names
 //
 // Output: one `name: value unit` line per figure; lines starting with '#' are notes.
@@ -26,6 +28,7 @@
 #include "bench.h"
 #include "summary.h"
 #include "specular/systemc.h"
+#include "specular/variants/variant.h"
 
 namespace specular_bench {
 namespace {
@@ -46,8 +49,30 @@ struct Model {
 /// The checksum prefix every model shares; no model runs fewer operations in --quick.
 constexpr std::size_t verify_ops = 4096;
 
+std::vector<Model> listed_models();
+
+/// Every model: the list below with each registered design variant's C++ model
+/// (variant_NAME, issue 26) after the core, so new variants need no line here.
 const std::vector<Model>& models() {
-  static const std::vector<Model> all = {
+  static const std::vector<Model> all = [] {
+    std::vector<Model> list = listed_models();
+    auto at = std::find_if(list.begin(), list.end(), [](const Model& m) { return m.name == "core"; }) + 1;
+    for (const std::string& variant : specular::variants::variant_names()) {
+      at = list.insert(at, Model{"variant_" + variant,
+                                 [variant](const Plan& p) { measure_variant(p, variant); },
+                                 8'000'000, 200'000, 5,
+                                 "design variant " + variant + "'s C++ model (variant.h), over the core's inputs"}) + 1;
+    }
+    return list;
+  }();
+  return all;
+}
+
+/// Whether `name` is a design variant's model (variant_NAME).
+bool is_variant_model(const std::string& name) { return name.rfind("variant_", 0) == 0; }
+
+std::vector<Model> listed_models() {
+  const std::vector<Model> all = {
       {"pow", [](const Plan& p) { measure_pow(p, "pow"); }, 8'000'000, 200'000, 5, "std::pow(c, n) in double: the yardstick"},
       {"core", measure_core, 16'000'000, 200'000, 5, "bit-accurate core (Core::run)"},
       // specular_tb --model core --format csv/json per row: core, comparison, writer.
@@ -270,6 +295,10 @@ void add_ratios(Round& round, std::vector<std::string>& order) {
   add("pow_yardstick_rate", pow_rate, "Mevals/s");
   for (const Model& m : models())
     if (m.name != "pow" && m.ratio && rate(m.name) > 0) add(m.name + "_vs_pow", rate(m.name) / pow_rate, "x");
+  // Each design variant's C++ model over the patent's Core, in the same repetition.
+  for (const Model& m : models())
+    if (is_variant_model(m.name) && rate(m.name) > 0 && rate("core") > 0)
+      add(m.name + "_vs_core", rate(m.name) / rate("core"), "x");
   if (rate("core") > 0 && rate("core_csv") > 0) {
     add("core_csv_vs_core", rate("core_csv") / rate("core"), "x");
     add("core_json_vs_core", rate("core_json") / rate("core"), "x");
@@ -301,6 +330,8 @@ bool bit_exact(const Round& round, bool quick) {
   for (const Model& m : models()) {
     if (m.name == "pow" || m.name == "pow_end" || m.name == "core") continue;
     if (m.name.rfind("floor_", 0) == 0) continue;  // computes nothing, by design
+    // A variant computes its own results; the patent's device must be the core's.
+    if (is_variant_model(m.name) && m.name != "variant_patent") continue;
     const bool streamed = m.name.find("_stream") != std::string::npos ||
                           m.name.find("_batch") != std::string::npos;
     const auto it = round.find(m.name + "_checksum");
@@ -335,14 +366,21 @@ void print_summary(const std::string& name, const std::vector<Figure>& samples) 
   std::printf("%s: %.4g %s [%.4g..%.4g]\n", name.c_str(), s.median, unit.c_str(), s.min, s.max);
 }
 
-int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& vcd_stem) {
+/// --variants: only the yardstick, the core and the design variants' models.
+bool in_variants_run(const std::string& name) {
+  return name == "pow" || name == "core" || name == "pow_end" || is_variant_model(name);
+}
+
+int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& vcd_stem,
+            bool variants_only = false) {
   std::printf("# specular_bench%s: seed %llu, every model in its own process, %d interleaved repetition%s\n",
               quick ? " --quick (smoke test: too few operations for stable figures)" : "",
               static_cast<unsigned long long>(seed), repetitions, repetitions == 1 ? "" : "s");
   std::printf("# a repetition runs every model once, in this order (best of N: timed N times in its process):\n");
   for (const Model& m : models())
-    std::printf("#   %s: %s; %zu operations, best of %d\n", m.name.c_str(), m.what.c_str(),
-                quick ? m.quick_ops : m.full_ops, quick ? 1 : m.repetitions);
+    if (!variants_only || in_variants_run(m.name))
+      std::printf("#   %s: %s; %zu operations, best of %d\n", m.name.c_str(), m.what.c_str(),
+                  quick ? m.quick_ops : m.full_ops, quick ? 1 : m.repetitions);
   std::fflush(stdout);
 
   std::vector<std::string> order;
@@ -354,6 +392,7 @@ int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& 
     std::fflush(stdout);
     Round round;
     for (const Model& m : models()) {
+      if (variants_only && !in_variants_run(m.name)) continue;
       const std::size_t ops = quick ? m.quick_ops : m.full_ops;
       const int reps = quick ? 1 : m.repetitions;
       if (!run_child({"specular_bench", "--model", m.name, "--ops", std::to_string(ops), "--reps",
@@ -399,7 +438,7 @@ int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& 
 }
 
 void usage(std::ostream& out) {
-  out << "usage: specular_bench [--all] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
+  out << "usage: specular_bench [--all | --variants] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
          "       specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"
          "       specular_bench --list\n"
          "Prints one `name: value unit` line per figure. --all (the default) runs every\n"
@@ -407,12 +446,13 @@ void usage(std::ostream& out) {
          "smoke test with few operations. --repetitions N (1..100; default 5, --quick 1):\n"
          "every model runs N times, interleaved, and each figure is printed as its median\n"
          "[min..max]; a target is met, not met or within noise. --vcd STEM: where the traced model writes\n"
-         "STEM.vcd (deleted after measuring its size unless --keep-vcd).\n";
+         "STEM.vcd (deleted after measuring its size unless --keep-vcd). --variants: only\n"
+         "std::pow, the core and each design variant's C++ model (variant_NAME_vs_core).\n";
 }
 
 int bench_main(int argc, char** argv) {
   std::string model;
-  bool quick = false, list = false;
+  bool quick = false, list = false, variants_only = false;
   Plan plan;
   std::size_t ops = 0;
   int repetitions = 0;  // 0: the default, 5 (1 with --quick)
@@ -426,6 +466,7 @@ int bench_main(int argc, char** argv) {
     };
     if (arg == "--all") model.clear();
     else if (arg == "--quick") quick = true;
+    else if (arg == "--variants") variants_only = true;
     else if (arg == "--list") list = true;
     else if (arg == "--model") model = value();
     else if (arg == "--ops") ops = parse_count(arg, value());
@@ -452,7 +493,8 @@ int bench_main(int argc, char** argv) {
     return 0;
   }
   if (model.empty())
-    return run_all(quick, repetitions != 0 ? repetitions : (quick ? 1 : 5), plan.seed, plan.vcd_path);
+    return run_all(quick, repetitions != 0 ? repetitions : (quick ? 1 : 5), plan.seed, plan.vcd_path,
+                   variants_only);
 
   const Model* m = find_model(model);
   if (m == nullptr) {

@@ -21,7 +21,7 @@ module specular_patent #(
   output wire signed [31:0] out_r, out_g, out_b  // pins 24-26, S18.13
 );
   wire pass1, pass2;
-  wire take = start & ready;  // one net per declaration: Icarus 11 refuses a list mixing the two forms
+  wire take = start & ready;
   // The observation outputs the wrapper does not read.
   wire unused_select37, unused_done35;
   wire [16:0] unused_reg1;

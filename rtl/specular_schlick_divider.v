@@ -11,10 +11,6 @@
 `default_nettype none
 
 module specular_schlick_divider #(
-  // Not read (no log2 here): twin/variants/CMakeLists.txt gives every top a ROM 5 image.
-  /* verilator lint_off UNUSEDPARAM */
-  parameter ROM5_IMAGE = "rom5.hex",
-  /* verilator lint_on UNUSEDPARAM */
   parameter ROM38_IMAGE = "rom38.hex",
   parameter [3:0] ROM38_BANK = 4'd0    // 4*constants + normalisation: 0 patent, 1 energy, 2 none
 ) (

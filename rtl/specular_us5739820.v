@@ -8,11 +8,6 @@
 `default_nettype none
 
 module specular_us5739820 #(
-  // ROM 5 is not used (no logarithm here); the parameter is kept so that every
-  // variant takes the same image overrides.
-  /* verilator lint_off UNUSEDPARAM */
-  parameter ROM5_IMAGE = "rom5.hex",
-  /* verilator lint_on UNUSEDPARAM */
   parameter ROM38_IMAGE = "rom38.hex"
 ) (
   input  wire               clk,

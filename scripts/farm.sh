@@ -43,10 +43,31 @@ emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
   done
 }
 
+# The design variants (issue 26): every name the registry holds (specular_variant_error
+# --list), so a new variant needs no line here. smoke: its quick RTL test and a small
+# error sweep; full: its exhaustive RTL proof (10 shards of test_long_variant_rtl_NAME),
+# its exhaustive error sweep (10 shards, merged) and its silicon run. The RTL and
+# silicon tasks run scripts/variant_job.py (build/testbench/specular_variant_job).
+variant_tasks() {  # variant_tasks smoke|full
+  local lister="$build/testbench/specular_variant_error" name names
+  [[ -x $lister ]] || die "no $lister (build target specular_variant_error)"
+  names=$("$lister" --list) || die "$lister --list failed"
+  for name in $names; do
+    case $1 in
+      smoke) emit_group "variant_rtl_quick_$name" variant_job 1 rtl-quick "$name"
+             emit_group "variant_error_slice_$name" variant_error 2 "$name" --n 1:4 ;;
+      full) emit_group "variant_rtl_$name" variant_job 10 rtl "$name"
+            emit_group "variant_error_$name" variant_error 10 "$name"
+            emit_group "variant_silicon_$name" variant_job 1 silicon "$name" ;;
+    esac
+  done
+}
+
 regression_tasks() {
   next_id=0
   case "$1" in
     smoke)  # about a minute of CPU: every mechanism once, every model kind once
+      variant_tasks smoke
       emit_group tb_sweep_core tb 4 --sweep --model core
       emit_group tb_random_pin tb 2 --random 20000 --seed 11 --model pin
       emit_group tb_random_rtl tb 2 --random 20000 --seed 12 --model rtl
@@ -54,6 +75,7 @@ regression_tasks() {
       emit_group prove_rtl_sync prove 2 --model rtl-sync --cos-stride 64
       ;;
     full)  # every proof of every model and device, every sweep, a long random run
+      variant_tasks full
       emit_group prove_rtl prove 50 --model rtl
       emit_group prove_rtl_sync prove 50 --model rtl-sync
       local model device

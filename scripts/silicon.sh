@@ -106,14 +106,15 @@ t0=$(seconds)
 # Hierarchy kept (area per block of Fig. 1); only Fig. 2's leaf gates are flattened into
 # control unit 16, where they are library cells already (silicon/fig2_cells.v), and
 # multiply_round_saturate, the primitive multipliers 39 and 13–15 share, into each of
-# them (as scripts/synth.sh does), so their cells stay counted per block.
+# them (as scripts/synth.sh does), so their cells stay counted per block; likewise the
+# leading-one normaliser into ROM 5.
 sources=()
 for f in "$root"/rtl/*.v; do sources+=("$f"); done
 front_rest="read_verilog ${sources[*]}
 read_verilog -overwrite $here/silicon/fig2_cells.v
 hierarchy -check -top $top
 setattr -mod -set keep_hierarchy 1 *
-setattr -mod -unset keep_hierarchy inverter and2 nand2 nand3 d_flip_flop *multiply_round_saturate
+setattr -mod -unset keep_hierarchy inverter and2 nand2 nand3 d_flip_flop *multiply_round_saturate *leading_one_normaliser
 flatten
 proc; opt; memory -nomap; opt"
 front="read_liberty -lib $lib

@@ -51,11 +51,12 @@ sources=()
 for f in "$root"/rtl/*.v; do sources+=("$f"); done
 
 # multiply_round_saturate, the primitive multipliers 39 and 13–15 share, is flattened
-# into each: the cells stay counted per block of Fig. 1, and ABC sees the same logic.
+# into each, and the leading-one normaliser into ROM 5: the cells stay counted per block
+# of Fig. 1, and ABC sees the same logic.
 script="read_verilog ${sources[*]}
 hierarchy -check -top specular_device
 setattr -mod -set keep_hierarchy 1 *
-setattr -mod -unset keep_hierarchy *multiply_round_saturate
+setattr -mod -unset keep_hierarchy *multiply_round_saturate *leading_one_normaliser
 flatten
 setattr -mod -unset keep_hierarchy *
 proc; opt; memory -nomap; opt; wreduce; opt

@@ -1,16 +1,25 @@
 #include "options.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
 #include "input.h"
 #include "parse_values.h"
+#include "specular/variants/variant.h"
 #include "usage_error.h"
 
 namespace specular {
 namespace tb {
 
 namespace {
+
+/// The registered design variants, "patent, ...", for messages and --help.
+std::string variant_list() {
+  std::string list;
+  for (const std::string& name : variants::variant_names()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
 
 /// Every option that takes a value, with what the value must be (for "missing value").
 const std::map<std::string, std::string>& valued_options() {
@@ -35,6 +44,7 @@ const std::map<std::string, std::string>& valued_options() {
       {"--trace-ops", "FIRST:COUNT, operations FIRST .. FIRST+COUNT-1 (from 0), COUNT >= 1"},
       {"--trace-failures", "a directory"},
       {"--trace-failures-max", "a count in [1, 1000]"},
+      {"--variant", "a design variant's name, one of: " + variant_list()},  // issue 26
   };
   return options;
 }
@@ -159,6 +169,11 @@ Options parse_options(const std::vector<std::string>& args) {
       } else if (option == "--partial") {
         if (value.empty()) throw UsageError("the file name is empty");
         o.partial_path = value;
+      } else if (option == "--variant") {  // issue 26
+        const auto names = variants::variant_names();
+        if (std::find(names.begin(), names.end(), value) == names.end())
+          throw UsageError("unknown variant '" + value + "' (known: " + variant_list() + ")");
+        o.variant = value;
       }
     } catch (const UsageError& e) {
       const std::string message = e.what();
@@ -246,6 +261,17 @@ Options parse_options(const std::vector<std::string>& args) {
     throw UsageError("--shard: N = " + std::to_string(o.shard.count) + " is outside the allowed range [1, " +
                      std::to_string(o.random_count) + "] for --random " + std::to_string(o.random_count) +
                      " (every shard at least one computation)");
+  if (!o.variant.empty()) {  // issue 26: the variant's C++ model, kernel-free
+    for (const char* option : {"--model", "--vcd", "--trace-ops", "--trace-failures", "--clock-period"})
+      if (seen.count(option))
+        throw UsageError(std::string("--variant runs the variant's C++ model (no clock, no signals): ") +
+                         option + " does not apply");
+    try {
+      (void)variants::make_variant(o.variant, o.config);
+    } catch (const std::invalid_argument& e) {  // a configuration the variant is not built for
+      throw UsageError("--variant " + o.variant + ": " + e.what());
+    }
+  }
   if (!o.partial_path.empty() && (o.partial_path == o.output_path || o.partial_path == o.vcd_path))
     throw UsageError("--partial names the same file as --output or --vcd: '" + o.partial_path + "'");
   return o;
@@ -371,6 +397,15 @@ Output:
   specular_tb --merge FILE... [--format text|json] [--output FILE] [--partial FILE]
                             merge every shard's partial into the unsharded run's report
                             (refuses a missing, duplicated or mismatched shard)
+  --variant NAME            a design variant's C++ model instead of the device
+                            (issue 26, docs/design_space.md); NAME one of:
+                            )" + variant_list() + R"(
+                            The same stimuli, reports and shards; the lobe is the
+                            norm column, out_*_ref = norm_exact*R, G, B, approx is
+                            not measured (no register 9), cycles 0 (no clock).
+                            Report only: every computation passes (each variant's
+                            bound: docs/variants/NAME.md). Not with --model, --vcd,
+                            --trace-ops, --trace-failures, --clock-period
   --help                    this text
 
 Fields per computation (csv/json): cos, n, r, g, b, cos_q (register 1 as a real),

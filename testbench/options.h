@@ -45,6 +45,9 @@ struct Options {
   std::string failure_dir;                         ///< --trace-failures DIR
   std::size_t failure_max = 10;                    ///< --trace-failures-max N
   bool quiet = false;                              ///< --quiet: no progress line
+  /// --variant NAME (issue 26): runs that design variant's C++ model (variant.h)
+  /// instead of a model of the device; empty = the device (--model).
+  std::string variant;
 };
 
 /// Largest --trace-failures-max: each file is a few kilobytes, the bound keeps a run

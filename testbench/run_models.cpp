@@ -17,6 +17,7 @@
 #endif
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
+#include "specular/variants/variant.h"
 #include "usage_error.h"
 
 namespace specular {
@@ -29,6 +30,7 @@ const char* to_string(Model model) {
     case Model::tlm: return "tlm";
     case Model::rtl: return "rtl";
     case Model::rtl_sync: return "rtl-sync";
+    case Model::variant: return "variant";
   }
   return "?";
 }
@@ -319,6 +321,28 @@ void run_core_model(const RunSettings& settings, const OperandSource& source,
   }
 }
 
+/// A design variant's C++ model (issue 26): the lobe on multiplier 39's bus, pins
+/// 24–26, register 1 as loaded; it has no passes, ROM 38 word or clock (all 0).
+void run_variant_model(const RunSettings& settings, const OperandSource& source,
+                       const ResultSink& sink) {
+  const std::unique_ptr<variants::Variant> variant = variants::make_variant(settings.variant, settings.config);
+  std::vector<Operands> chunk;
+  std::vector<Result> results;
+  std::vector<double> cycles;
+  chunk.reserve(settings.chunk_size);
+  while (source(chunk, settings.chunk_size)) {
+    results.assign(chunk.size(), Result{});
+    for (std::size_t i = 0; i < chunk.size(); ++i) {
+      const variants::VariantResult r = variant->run(chunk[i]);
+      results[i].reg1 = chunk[i].cos;
+      results[i].norm39 = r.lobe;
+      results[i].out = r.out;
+    }
+    cycles.assign(chunk.size(), 0.0);
+    sink(chunk, results, cycles);
+  }
+}
+
 /// The TLM model: an initiator thread plays the CPU's driver and runs every operation
 /// through the `lt` target's registers (N, R, G, B when they change, COS, START, then
 /// the outputs and inspection registers), under a 1 µs quantum keeper as a virtual
@@ -408,6 +432,7 @@ void run_operations(const RunSettings& settings, const OperandSource& source,
 #endif
     case Model::core: return run_core_model(settings, source, sink);
     case Model::tlm: return run_tlm_model(settings, source, sink);
+    case Model::variant: return run_variant_model(settings, source, sink);
   }
 }
 

@@ -22,6 +22,9 @@ enum class Model {
   tlm,   ///< the TLM-2.0 `lt` target through its registers; cycles = its annotation
   rtl,   ///< the verilated RTL twin (rtl/, twin/) driven through the same harness as `pin`
   rtl_sync,  ///< the synchronous variant (rtl/specular_device_sync.v), its own protocol
+  /// A design variant's C++ model (issue 26, RunSettings::variant): kernel-free, no
+  /// clock (cycles 0). Chosen by specular_tb --variant NAME, never by --model.
+  variant,
 };
 
 const char* to_string(Model model);
@@ -37,13 +40,15 @@ bool pin_level(Model model);
 constexpr double spec_latency_cycles = 2.5;
 /// The synchronous variant's timing table (docs/rtl.md): start edge → 35↑.
 constexpr double sync_latency_cycles = 2.0;
-/// The latency a model must show: sync_latency_cycles for rtl-sync, else the spec's.
+/// The latency a model must show: sync_latency_cycles for rtl-sync, else the spec's
+/// (Model::variant: none is checked, its C++ model has no clock).
 double latency_cycles(Model model);
 
 /// How to run: which model, the device's configuration, the clock, tracing.
 struct RunSettings {
   Model model = Model::pin;
   Config config{};
+  std::string variant;  ///< Model::variant: the registered name (variant.h)
   std::uint64_t clock_period_ps = 10000;  ///< pin, rtl: period of pin 28; tlm: of its annotation
   std::string vcd_base;          ///< pin, rtl: VCD file name without ".vcd"; empty = no trace
   /// rtl, rtl-sync: ".fst" has Verilator write FST directly (the twins verilated with

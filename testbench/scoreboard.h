@@ -69,6 +69,13 @@ class Scoreboard {
   /// `latency_cycles`: start → 35↑ a result must show (the spec's 2.5 T by default;
   /// the synchronous variant's 2 T, latency_cycles(Model::rtl_sync)).
   explicit Scoreboard(const Config& config, double latency_cycles = spec_latency_cycles);
+  /// A design variant's scoreboard (specular_tb --variant, issue 26): the lobe (norm)
+  /// against norm_exact = K(n)·cos_q^n and against the patent formula's norm_ref, pins
+  /// 24–26 against norm_exact·I (out_ref becomes that), no approx (no register 9), no
+  /// latency (no clock). Report only: every check passes while register 1 holds the
+  /// stimulus's code (each variant's bound is its own, docs/variants/NAME.md).
+  static Scoreboard for_variant(const Config& config);
+  bool variant() const { return variant_; }
   /// Compares one result with the reference (does not record it).
   Comparison compare(const Stimulus& stimulus, const Result& result, double cycles) const;
   /// Adds a comparison to the summary.
@@ -82,6 +89,7 @@ class Scoreboard {
   Config config_;
   Formats formats_;
   double latency_cycles_;
+  bool variant_ = false;
   Summary summary_;
 };
 

@@ -173,7 +173,8 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   if (!o.vcd_path.empty()) vcd_file.emplace(o.vcd_path, "--vcd", fst ? ".fst" : ".vcd");
 
   RunSettings settings;
-  settings.model = o.model;
+  settings.model = o.variant.empty() ? o.model : Model::variant;  // issue 26: --variant
+  settings.variant = o.variant;
   settings.config = o.config;
   settings.clock_period_ps = o.clock_period_ps;
   if (twin && fst) settings.twin_trace_suffix = ".fst";
@@ -200,7 +201,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   std::ostream& report_stream = output_file ? output_file->stream() : out;
   const std::unique_ptr<Report> report = make_report(o.format, report_stream, err);
   RunDescription description;
-  description.model = to_string(o.model);
+  description.model = o.variant.empty() ? std::string(to_string(o.model)) : "variant " + o.variant;
   description.stimulus = plan.description;
   description.config = o.config;
   description.clock_period_ps = o.clock_period_ps;
@@ -211,7 +212,8 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   if (!o.shard.whole()) description.stimulus += " --shard " + o.shard.text();
   report->begin(description);
 
-  Scoreboard scoreboard(o.config, latency_cycles(settings.model));
+  Scoreboard scoreboard = o.variant.empty() ? Scoreboard(o.config, latency_cycles(settings.model))
+                                             : Scoreboard::for_variant(o.config);
   std::uint64_t index = 0;  // of the next result in the run
   // Rows printed on the same terminal would land in the middle of the progress line.
   const bool rows_on_terminal = !output_file && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1 &&

@@ -17,6 +17,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "specular/variants/variant.h"
 #include "support/scratch.h"
 #include "summary.h"  // bench/summary.h
 
@@ -70,6 +71,10 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
     EXPECT_EQ(names.count(std::string(model) + "_rate"), 1u) << model;
     EXPECT_EQ(names.count(std::string(model) + "_peak_memory"), 1u) << model;
   }
+  // Each design variant's C++ model (issue 26), and its ratio to the patent's Core.
+  for (const std::string& variant : specular::variants::variant_names())
+    for (const char* figure : {"_rate", "_peak_memory", "_vs_core", "_vs_pow"})
+      EXPECT_EQ(names.count("variant_" + variant + figure), 1u) << variant << figure;
   // Each one's ratio to std::pow, the VCD's cost, the targets and bit-exactness.
   for (const char* model : {"core", "pin_vcd_off", "pin_stream", "pin_vcd_on", "tlm_lt_quantum", "tlm_lt",
                             "tlm_pin", "tlm_lt_batch", "tlm_pin_batch"})

@@ -10,8 +10,8 @@
 //   specular_romgen --out-dir DIR [--bank-bits B] [--width NAME=VALUE]...
 //       writes DIR/rom5.hex (2^rom5_addr_bits words) and DIR/rom38.hex (2^B banks of
 //       2^n_bits words; bank b = Normalisation value b, unused banks zero), DIR/pins.hex
-//       and the design variants' tables: DIR/exp2.hex (variant exp2's exp2 unit,
-//       rtl/exp2_unit.v), DIR/recip.hex (variant schlick, 1024 words)
+//       and DIR/exp2.hex (variant exp2's exp2 unit, rtl/exp2_unit.v), DIR/recip.hex
+//       (variant schlick's reciprocal table, rtl/reciprocal_nr.v)
 //   specular_romgen --check DUMP [--bank-bits B] [--width NAME=VALUE]...
 //       compares every "rom5 BUS LOG2" and "rom38 BANK N K" line (hex) of DUMP with the
 //       tables; exit 1 on the first difference or when an address was never read
@@ -162,6 +162,7 @@ void write_images(const Options& o) {
                   std::to_string(exp2.organisation().value_frac_bits) + " fraction bits, difference to the next on " +
                   std::to_string(exp2.delta_bits()) + " bits}",
               exp2.word_bits(), exp2.words());
+
   // Variant schlick's reciprocal table (rtl/reciprocal_nr.v): the same at every width set.
   const specular::variants::ReciprocalNr reciprocal;
   write_image(o.out_dir + "/recip.hex",

@@ -5,6 +5,7 @@
 #   1. every merged result equals the unsharded run's, bit for bit: specular_prove's
 #      report whole; specular_tb's summary text and its partial's summary (every maximum,
 #      its place, the counts, the results' checksum);
+#      specular_variant_error's figures less the wall time; a variant's RTL tests PASS;
 #   2. a task killed on purpose (scancel of one array task) makes the merge fail, naming
 #      the task and its log; resubmitting only that task completes the run.
 # Skips (exit 77) without root or without the slurm-wlm and munge packages.
@@ -57,6 +58,11 @@ check_merged() {  # check_merged RUN_DIR
     [[ -f $dir/merged/$group.txt ]] || fail "no merged result of $group in $dir/merged"
     if [[ $group == prove_* ]]; then
       cmp "$ref" "$dir/merged/$group.txt" || fail "$group: merged report differs from the unsharded one"
+    elif [[ $group == variant_error_* ]]; then  # issue 26: the figures, less the wall time
+      cmp <(grep -v '^  wall ' "$ref") <(grep -v '^  wall ' "$dir/merged/$group.txt") ||
+        fail "$group: merged figures differ from the unsharded ones"
+    elif [[ $group == variant_* ]]; then  # a variant's RTL test: every shard passed
+      grep -q ': PASS$' "$dir/merged/$group.txt" || fail "$group: the merge is not PASS"
     else
       diff <(summary_block "$ref") <(summary_block "$dir/merged/$group.txt") || fail "$group: merged summary differs"
       cmp <(jq -S .summary "$scratch/ref/$group.json") <(jq -S .summary "$dir/merged/$group.json") ||

@@ -96,6 +96,19 @@ inline code_t mux3(const FormatSet& f, bool select36, code_t reg1, code_t reg9) 
   return select36 ? reg9 : reg1 << (f.reg9.frac_bits - f.cos.frac_bits);
 }
 
+// ---- Leading-one normaliser (rtl/leading_one_normaliser.v) ------------------------
+/// What a leading-one detector and its shifter give: the index of the highest one of a
+/// `width`-bit code x > 0 and x shifted left until that one sits at bit width − 1. ROM 5
+/// addresses its mantissa table with it; the design variants normalise a divisor with it.
+struct LeadingOne {
+  int msb = 0;                  ///< index of the highest one
+  std::uint64_t normalised = 0; ///< x << (width − 1 − msb)
+};
+inline LeadingOne leading_one(std::uint64_t x, int width) {
+  const int msb = 63 - __builtin_clzll(x);
+  return LeadingOne{msb, x << (width - 1 - msb)};
+}
+
 // ---- ROM 5: log2 unit (leading-one detector + mantissa ROM) ---------------------
 /// ROM 5 is the usual hardware log2 unit (spec §4): a leading-one detector finds the
 /// exponent, the next `rom5_addr_bits` bits address a table of log2(1.m), and the
@@ -120,12 +133,11 @@ class Rom5Table {
   static code_t lookup(const std::uint32_t* words, int addr_bits, int word_bits,
                        int bus_frac_bits, code_t zero_log2, code_t bus) {
     if (bus <= 0) return zero_log2;
-    const int msb = 63 - __builtin_clzll(static_cast<std::uint64_t>(bus));
     // The leading one moves to bit 63 and out; the next addr_bits bits are the address
     // (zero-filled when fewer bits follow the leading one).
-    const std::uint64_t aligned = (static_cast<std::uint64_t>(bus) << (63 - msb)) << 1;
-    const std::uint64_t address = aligned >> (64 - addr_bits);
-    const code_t exponent = msb - bus_frac_bits;
+    const LeadingOne one = leading_one(static_cast<std::uint64_t>(bus), 64);
+    const std::uint64_t address = (one.normalised << 1) >> (64 - addr_bits);
+    const code_t exponent = one.msb - bus_frac_bits;
     return exponent * (code_t{1} << word_bits) + words[address];
   }
   /// The table itself, for reports and tests: word a = round(log2(1 + a/2^M) · 2^W).
@@ -258,20 +270,6 @@ inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
 /// rounding half up (multiply_round_saturate; y² ≤ 1 never saturates). rtl/squarer.v.
 inline code_t square(const FixedFormat& format, code_t y) {
   return multiply_round_saturate(format, y, y, format.frac_bits);
-}
-
-// ---- Leading-one normaliser (rtl/leading_one_normaliser.v) ------------------------
-/// What a leading-one detector and its shifter give: the index of the highest one of a
-/// `width`-bit code x > 0 and x shifted left until that one sits at bit width − 1 (ROM
-/// 5's detector does the same to address its mantissa table; the design variants
-/// normalise a divisor with it, rtl/leading_one_normaliser.v).
-struct LeadingOne {
-  int msb = 0;                  ///< index of the highest one
-  std::uint64_t normalised = 0; ///< x << (width − 1 − msb)
-};
-inline LeadingOne leading_one(std::uint64_t x, int width) {
-  const int msb = 63 - __builtin_clzll(x);
-  return LeadingOne{msb, x << (width - 1 - msb)};
 }
 
 }  // namespace arith

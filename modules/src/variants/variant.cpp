@@ -9,8 +9,8 @@
 
 #include "specular/variants/one_pass.h"
 #include "specular/variants/us5739820.h"
-#include "specular/variants/schlick.h"
 #include "specular/variants/us5739820_pipelined.h"
+#include "specular/variants/schlick.h"
 #include "specular/variants/schlick_divider.h"
 
 namespace specular {
@@ -27,8 +27,8 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"one_pass_pipelined", [](const Config& c) { return std::make_unique<OnePass>(c, true); }},
       {"exp2", [](const Config& c) { return std::make_unique<Exp2Variant>(c); }},
       {"us5739820", [](const Config& c) { return std::make_unique<Us5739820>(c); }},
-      {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
       {"us5739820_pipelined", [](const Config& c) { return std::make_unique<Us5739820Pipelined>(c); }},
+      {"schlick", [](const Config& c) { return std::make_unique<Schlick>(c); }},
       {"schlick_divider", [](const Config& c) { return std::make_unique<SchlickDivider>(c); }},
   };
   return table;

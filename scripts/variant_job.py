@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""A design variant's farm jobs (issue 26) in the farm's task form (scripts/farm.sh):
+
+  specular_variant_job rtl NAME --shard I/N --partial FILE
+      the exhaustive RTL proof's shard: tests/test_long_variant_rtl_NAME (the verilated
+      top equals the C++ model, every cos code x the n with (n - 1) mod N == I) under
+      SPECULAR_OPERATION_SHARD=I/N
+  specular_variant_job rtl-quick NAME --shard 0/1 --partial FILE
+      the quick slice: tests/test_variant_rtl_NAME
+  specular_variant_job silicon NAME --shard 0/1 --partial FILE
+      scripts/silicon.sh --top specular_NAME --no-hazards into silicon/NAME beside the
+      partials' folder (the run's folder), ROMs from BUILD/rtl/rom/default
+  specular_variant_job --merge FILE...
+      one complete set (same job, every shard 0..N-1 once), every shard passed: exit 0
+
+build/testbench/specular_variant_job (written by CMake) runs this with --build BUILD.
+A partial is JSON: kind, version, settings {job, name}, shard {index, count},
+summary {exit, passed_tests, ...}, timing {wall_seconds}.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+KIND = "specular_variant_job partial result"
+JOBS = ("rtl", "rtl-quick", "silicon")
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def die(message, status=2):
+    print("specular_variant_job: error: " + message, file=sys.stderr)
+    sys.exit(status)
+
+
+def parse_shard(text):
+    m = re.fullmatch(r"(\d+)/(\d+)", text or "")
+    if not m or not 0 <= int(m.group(1)) < int(m.group(2)):
+        die("--shard: '%s' is not I/N with 0 <= I < N" % text)
+    return int(m.group(1)), int(m.group(2))
+
+
+def run_job(build, job, name, shard, partial):
+    index, count = shard
+    env = dict(os.environ)
+    started = time.time()
+    summary = {}
+    if job in ("rtl", "rtl-quick"):
+        binary = os.path.join(build, "tests", ("test_long_variant_rtl_" if job == "rtl" else "test_variant_rtl_") + name)
+        if not os.access(binary, os.X_OK):
+            die("no %s (build target %s)" % (binary, os.path.basename(binary)), 1)
+        if job == "rtl":
+            env["SPECULAR_OPERATION_SHARD"] = "%d/%d" % (index, count)
+        elif count != 1:
+            die("rtl-quick is one task: --shard 0/1")
+        result = subprocess.run([binary], env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        sys.stdout.write(result.stdout)
+        passed = re.search(r"\[  PASSED  \] (\d+) test", result.stdout)
+        summary = {"exit": result.returncode, "passed_tests": int(passed.group(1)) if passed else 0}
+    else:
+        if count != 1:
+            die("silicon is one task: --shard 0/1")
+        out = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(partial))), "silicon", name)
+        command = ["bash", os.path.join(ROOT, "scripts", "silicon.sh"), "--top", "specular_" + name, "--no-hazards",
+                   out, os.path.join(build, "rtl", "rom", "default")]
+        result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        sys.stdout.write(result.stdout)
+        summary = {"exit": result.returncode, "passed_tests": 1 if result.returncode == 0 else 0, "out": out}
+        figures = os.path.join(out, "silicon_summary.json")
+        if result.returncode == 0 and os.path.exists(figures):
+            with open(figures) as f:
+                summary["silicon_summary"] = json.load(f)
+    document = {"kind": KIND, "version": 1, "settings": {"job": job, "name": name},
+                "shard": {"index": index, "count": count}, "summary": summary,
+                "timing": {"wall_seconds": round(time.time() - started, 3)}}
+    with open(partial + ".tmp", "w") as f:
+        json.dump(document, f, indent=2)
+        f.write("\n")
+    os.replace(partial + ".tmp", partial)
+    return 0 if summary["exit"] == 0 else 1
+
+
+def merge(files):
+    if not files:
+        die("--merge needs the partial files of every shard (FILE...)")
+    parts = []
+    for path in files:
+        try:
+            with open(path) as f:
+                p = json.load(f)
+            if p.get("kind") != KIND or p.get("version") != 1:
+                die("--merge: '%s' is not a %s" % (path, KIND))
+            parts.append((path, p, p["shard"]["index"], p["shard"]["count"]))
+        except (OSError, ValueError, KeyError, TypeError) as e:
+            die("--merge: '%s' is not a complete partial result: %s" % (path, e))
+    first = parts[0][1]
+    count = parts[0][3]
+    seen = {}
+    for path, p, index, n in parts:
+        if p["settings"] != first["settings"]:
+            die("--merge: '%s' has other settings than '%s' (%s vs %s)" % (path, parts[0][0], p["settings"], first["settings"]))
+        if n != count:
+            die("--merge: '%s' is shard %d/%d, '%s' one of %d shards" % (path, index, n, parts[0][0], count))
+        if index in seen:
+            die("--merge: shard %d/%d is given twice: '%s' and '%s'" % (index, count, seen[index], path))
+        seen[index] = path
+    missing = ["%d/%d" % (i, count) for i in range(count) if i not in seen]
+    if missing:
+        die("--merge: %d of %d shards missing: %s" % (len(missing), count, ", ".join(missing[:10])))
+    failed = [path for path, p, _, _ in parts if p["summary"].get("exit") != 0]
+    s = first["settings"]
+    tests = sum(p["summary"].get("passed_tests", 0) for _, p, _, _ in parts)
+    wall = sum(p["timing"].get("wall_seconds", 0) for _, p, _, _ in parts)
+    verdict = "FAIL" if failed else "PASS"
+    print("variant %s, %s: %d shard(s), %d test(s) passed, %.1f s of tasks: %s" % (s["name"], s["job"], count, tests, wall, verdict))
+    for path in failed:
+        print("  failed: " + path)
+    for _, p, _, _ in parts:
+        if "silicon_summary" in p["summary"]:
+            print(json.dumps(p["summary"]["silicon_summary"], indent=2))
+    return 1 if failed else 0
+
+
+def main(argv):
+    build = os.path.join(ROOT, "build")
+    if argv[:1] == ["--build"]:
+        if len(argv) < 2:
+            die("--build needs a folder")
+        build, argv = argv[1], argv[2:]
+    if not argv or argv[0] in ("-h", "--help"):
+        print(__doc__)
+        return 0 if argv else 2
+    if argv[0] == "--merge":
+        return merge(argv[1:])
+    if argv[0] not in JOBS:
+        die("unknown job '%s' (allowed: %s, or --merge FILE...)" % (argv[0], ", ".join(JOBS)))
+    job, rest = argv[0], argv[1:]
+    if not rest or rest[0].startswith("--"):
+        die("%s needs a variant's NAME" % job)
+    name, rest = rest[0], rest[1:]
+    shard, partial = (0, 1), None
+    while rest:
+        if rest[0] in ("--shard", "--partial") and len(rest) >= 2:
+            if rest[0] == "--shard":
+                shard = parse_shard(rest[1])
+            else:
+                partial = rest[1]
+            rest = rest[2:]
+        else:
+            die("unknown or incomplete option '%s' (allowed: --shard I/N, --partial FILE)" % rest[0])
+    if partial is None:
+        die("--partial FILE is needed (the farm's merge reads it)")
+    if not re.fullmatch(r"[a-z0-9_]+", name):
+        die("'%s' is not a variant's name" % name)
+    return run_job(build, job, name, shard, partial)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

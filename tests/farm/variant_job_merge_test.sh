@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# scripts/variant_job.py --merge (issue 26): the farm's merge of a variant's RTL-proof
+# and silicon tasks takes one complete set of passed shards and refuses anything else,
+# naming the shard or file: a missing shard, a duplicate, other settings, a failed shard.
+# Partials are written here by hand (no build needed).
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+job=("python3" "$root/scripts/variant_job.py")
+scratch=$(mktemp -d "${TMPDIR:-/tmp}/variant_job_test.XXXXXX")
+trap 'rm -rf "$scratch"' EXIT
+fail() { echo "variant_job_merge_test.sh: FAIL: $*" >&2; exit 1; }
+
+partial() {  # partial FILE INDEX COUNT EXIT [NAME]
+  printf '{"kind": "specular_variant_job partial result", "version": 1, "settings": {"job": "rtl", "name": "%s"}, "shard": {"index": %d, "count": %d}, "summary": {"exit": %d, "passed_tests": 1}, "timing": {"wall_seconds": 1.5}}\n' \
+    "${5:-patent}" "$2" "$3" "$4" >"$1"
+}
+for i in 0 1 2; do partial "$scratch/p$i.json" "$i" 3 0; done
+partial "$scratch/failed1.json" 1 3 1
+partial "$scratch/other1.json" 1 3 0 exp2
+
+expect() {  # expect STATUS TEXT COMMAND...
+  local status=$1 text=$2 got=0 output
+  shift 2
+  output=$("$@" 2>&1) || got=$?
+  ((got == status)) || fail "'$*' exited $got, not $status: $output"
+  [[ $output == *"$text"* ]] || fail "'$*' does not say '$text': $output"
+}
+expect 0 "variant patent, rtl: 3 shard(s), 3 test(s) passed, 4.5 s of tasks: PASS" \
+  "${job[@]}" --merge "$scratch/p2.json" "$scratch/p0.json" "$scratch/p1.json"
+expect 2 "1 of 3 shards missing: 1/3" "${job[@]}" --merge "$scratch/p0.json" "$scratch/p2.json"
+expect 2 "shard 0/3 is given twice" "${job[@]}" --merge "$scratch/p0.json" "$scratch/p0.json" "$scratch/p1.json" "$scratch/p2.json"
+expect 2 "other settings" "${job[@]}" --merge "$scratch/p0.json" "$scratch/other1.json" "$scratch/p2.json"
+expect 1 "failed: $scratch/failed1.json" "${job[@]}" --merge "$scratch/p0.json" "$scratch/failed1.json" "$scratch/p2.json"
+expect 2 "unknown job 'proof'" "${job[@]}" proof patent --partial "$scratch/x.json"
+echo "variant_job_merge_test.sh: PASS"

@@ -84,6 +84,8 @@ regression_tasks() {
         # The hazard sweep needs the top's hazard probe (the drawn device's control unit).
         [[ $top != specular_device ]] || emit_group "${g}_hazards" gatesim 8 "$common --hazards $t_sim @WORK@ $rom"
       done
+      # The numerical study (testbench/study/specular_study): its stages as tasks.
+      emit_group study study 6 --workers 1
       ;;
     *) die "unknown regression '$1' (allowed: smoke, full)" ;;
   esac

@@ -211,7 +211,7 @@ for line in open(os.path.join(d, "tasks.tsv")):
     tid, group, kind, args = line.rstrip("\n").split("\t")
     p = os.path.join(d, "status", tid + ".json")
     st = json.load(open(p)) if os.path.exists(p) else {"exit": None, "wall_seconds": None, "cpu_seconds": None}
-    tasks.append({"id": int(tid), "group": group, "command": "specular_%s %s" % (kind, args),
+    tasks.append({"id": int(tid), "group": group, "command": "%s %s" % ({"gatesim": "scripts/gatesim.sh", "study": "specular_study"}.get(kind, "specular_" + kind), args),
                   "exit": st.get("exit"), "wall_seconds": st.get("wall_seconds"),
                   "cpu_seconds": st.get("cpu_seconds"), "host": st.get("host"),
                   "log": "logs/task-%s.log" % tid})

@@ -173,6 +173,9 @@ if [[ -z "$hazards" ]]; then
 fi
 : > "$out/results.tsv"
 run_started=$SECONDS
+# The commit of the run (a partial names it; read at the start: the code that ran).
+run_commit=$(git -C "$root" rev-parse HEAD 2>/dev/null || echo unknown)
+[[ -z $(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null) ]] || run_commit+=-dirty
 mode=period; [[ -z "$bisect" ]] || mode=bisect; [[ -z "$hazards" ]] || mode=hazards
 # write_partial: OUT_DIR/partial.json (and --partial FILE) from this run's results.
 write_partial() {
@@ -180,10 +183,11 @@ write_partial() {
     echo "mode=$mode"; echo "top=$top"; echo "period=${period:-${bisect:-$hazards}}"
     echo "policies=$policies"; echo "groups=$groups"; echo "random=$random"
     echo "netlist_dir=$netlist_dir"; echo "rom_dir=$rom_dir"; echo "conf=$conf"; echo "root=$root"
-    echo "shard_index=$shard_index"; echo "shard_count=$shard_count"
+    echo "shard_index=$shard_index"; echo "shard_count=$shard_count"; echo "commit=$run_commit"
     echo "wall_seconds=$((SECONDS - run_started))"; echo "hazard_units=${hazard_units:-}"
-    echo "cpu=$(times | tr '\n' ' ')"
   } > "$out/partial_info.txt"
+  times > "$out/times.txt"  # this shell's and its children's CPU (a builtin: not in a subshell)
+  echo "cpu=$(tr '\n' ' ' < "$out/times.txt")" >> "$out/partial_info.txt"
   /usr/bin/python3 "$here/silicon/gatesim_partial.py" write "$out" "$out/partial.json" \
     || { echo "gatesim.sh: writing the partial result failed" >&2; exit 1; }
   [[ -z "$partial" ]] || cp "$out/partial.json" "$partial"

@@ -136,7 +136,7 @@ def write(out, partial):
                           "boundaries": (open(os.path.join(d, "boundaries.txt")).read().splitlines()
                                          if os.path.exists(os.path.join(d, "boundaries.txt")) else [])})
         result["hazards"] = {"units": units, "out_dir": out}
-    p = {"kind": "gatesim", "version": VERSION, "commit": commit(info["root"]), "settings": settings,
+    p = {"kind": "gatesim", "version": VERSION, "commit": info.get("commit") or commit(info["root"]), "settings": settings,
          "shard": {"index": int(info["shard_index"]), "count": int(info["shard_count"])},
          "result": result,
          "timing": {"wall_seconds": float(info.get("wall_seconds", 0)),

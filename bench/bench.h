@@ -70,6 +70,7 @@ void measure_core(const Plan& plan);
 void measure_variant(const Plan& plan, const std::string& variant_name);
 /// specular_tb's rows with the core model: core, comparison and the CSV (or JSON) writer.
 void measure_rows(const Plan& plan, const std::string& name, bool json);
+void measure_rows_nlohmann(const Plan& plan, const std::string& name, bool serializer);
 /// What the pin-level device writes to plan.vcd_path while it runs.
 enum class Trace {
   off,

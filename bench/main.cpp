@@ -179,8 +179,24 @@ std::vector<Model> listed_models() {
   return all;
 }
 
+/// Models run only by name (--model), not by --all.
+const std::vector<Model>& extra_models() {
+  static const std::vector<Model> extra = {
+      // The same rows through nlohmann-json (issue 25): a measurement of the
+      // choice docs/farm.md records (specular_bench --model core_json_nlohmann[_serializer]).
+      {"core_json_nlohmann", [](const Plan& p) { measure_rows_nlohmann(p, "core_json_nlohmann", false); },
+       2'000'000, 50'000, 3, "JSON rows written by nlohmann-json's dump() (core + comparison + writer)"},
+      {"core_json_nlohmann_serializer",
+       [](const Plan& p) { measure_rows_nlohmann(p, "core_json_nlohmann_serializer", true); }, 2'000'000, 50'000,
+       3, "JSON rows written by nlohmann-json's serializer kept across rows"},
+  };
+  return extra;
+}
+
 const Model* find_model(const std::string& name) {
   for (const Model& m : models())
+    if (m.name == name) return &m;
+  for (const Model& m : extra_models())
     if (m.name == name) return &m;
   return nullptr;
 }

@@ -1,7 +1,7 @@
 // Leading-one normaliser: the index of the highest one of a W-bit code x > 0 and x
-// shifted left until that one sits at bit W-1. ROM 5 addresses its mantissa table with
-// it; the design variants normalise a divisor with it (variant schlick: d into [1, 2)
-// before the reciprocal table). Same bits as arith::leading_one. x = 0 gives msb 0 and
+// shifted left until that one sits at bit W-1: the design variants normalise a divisor
+// with it (variant schlick: d into [1, 2) before the reciprocal table). ROM 5 keeps its
+// own detector (rom5.v says why). Same bits as arith::leading_one. x = 0 gives msb 0 and
 // x unchanged (callers never present it: ROM 5 reads a non-positive bus as log2 0).
 `default_nettype none
 

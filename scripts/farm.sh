@@ -14,6 +14,8 @@
 #   --jobs P           local: P tasks at a time (default: nproc)
 #   --partition NAME, --account NAME, --time LIMIT (default 01:00:00),
 #   --array-width W    Slurm: at most W array tasks at a time (sbatch --array=...%W)
+#   --netlists DIR     full: the mapped devices for the gate-level tasks (DIR/TOP/ from
+#                      scripts/silicon.sh --no-gatesim); default: mapped at submission
 #
 # Every task is (what, index, count) -> a partial result (specular_tb or specular_prove
 # --shard I/N --partial FILE); the merge checks that every task finished (naming the
@@ -30,8 +32,10 @@ root="$(cd "$(dirname "$script")/.." && pwd)"
 die() { echo "farm.sh: error: $*" >&2; exit 2; }
 
 # ---- the regressions -----------------------------------------------------------------
-# One line per task: ID <tab> GROUP <tab> KIND <tab> ARGUMENTS. KIND is tb or prove;
-# the task runs "$build/testbench/specular_KIND ARGUMENTS --shard I/N --partial ...".
+# One line per task: ID <tab> GROUP <tab> KIND <tab> ARGUMENTS. KIND is tb, prove, study
+# or gatesim; the task runs "$build/testbench/specular_KIND ARGUMENTS --shard I/N
+# --partial ..." (study: testbench/study/specular_study; gatesim: scripts/gatesim.sh, with
+# @WORK@ in ARGUMENTS the task's own folder work/ID and @NETLISTS@ the run's netlists).
 # Tasks of one GROUP are the N shards of one run and merge into one answer.
 emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
   local group=$1 kind=$2 n=$3
@@ -88,6 +92,22 @@ regression_tasks() {
         emit_group "tb_sweep_${model//-/_}" tb 10 --sweep --model "$model"
       done
       emit_group tb_random_pin tb 20 --random 10000000 --seed 1 --model pin
+      # The gate-level regression of both devices (scripts/gatesim.sh): every policy at
+      # 1.1 T_sim with 280 vectors each (8 edge-case groups + 200 random; 28 by default),
+      # the T_sim bisection (each shard bisects its policies) and the drawn device's hazard
+      # sweep (8 units).
+      local rom="$build/rtl/rom/default" top t_sta t_sim
+      for top in specular_device:37.18:26.7 specular_device_sync:18.64:14.3; do
+        IFS=: read -r top t_sta t_sim <<<"$top"
+        local g="gatesim_${top#specular_}" common="--top $top --netlist-dir @NETLISTS@/$top"
+        emit_group "${g}_period" gatesim 12 "$common --policies all --groups 8 --random 200" \
+          "$(echo "$t_sim * 1.1" | bc -l | xargs printf '%.2f')" @WORK@ "$rom"
+        emit_group "${g}_bisect" gatesim 12 "$common --policies all --bisect $t_sta @WORK@ $rom"
+        # The hazard sweep needs the top's hazard probe (the drawn device's control unit).
+        [[ $top != specular_device ]] || emit_group "${g}_hazards" gatesim 8 "$common --hazards $t_sim @WORK@ $rom"
+      done
+      # The numerical study (testbench/study/specular_study): its stages as tasks.
+      emit_group study study 6 --workers 1
       ;;
     *) die "unknown regression '$1' (allowed: smoke, full)" ;;
   esac
@@ -96,10 +116,10 @@ regression_tasks() {
 # ---- options ---------------------------------------------------------------------------
 parse_options() {
   out_dir="" build="$root/build" executor="" jobs="$(nproc)" partition="" account=""
-  time_limit="01:00:00" width=""
+  time_limit="01:00:00" width="" netlists=""
   while (($#)); do
     case "$1" in
-      --out|--build|--executor|--jobs|--partition|--account|--time|--array-width)
+      --out|--build|--executor|--jobs|--partition|--account|--time|--array-width|--netlists)
         (($# >= 2)) || die "option $1 needs a value"
         case "$1" in
           --out) out_dir=$2 ;;
@@ -109,6 +129,7 @@ parse_options() {
           --jobs) [[ $2 =~ ^[0-9]+$ ]] && (($2 >= 1 && $2 <= 4096)) || die "--jobs: '$2' is outside the allowed range [1, 4096]"
                   jobs=$2 ;;
           --partition) partition=$2 ;;
+          --netlists) netlists=$(cd "$2" 2>/dev/null && pwd) || die "--netlists: '$2' is not a folder" ;;
           --account) account=$2 ;;
           --time) [[ $2 =~ ^[0-9:-]+$ ]] || die "--time: '$2' is not a Slurm time limit (e.g. 30, 01:00:00, 1-00:00:00)"
                   time_limit=$2 ;;
@@ -136,9 +157,17 @@ run_task() {  # run_task DIR ID
   rm -f "$dir/status/$id.json" "$partial"
   local started ended status=0
   started=$(date +%s.%N)
+  local tool=("$build_dir/testbench/specular_$kind")
+  case $kind in
+    gatesim) tool=(bash "$root/scripts/gatesim.sh" --quiet --specular-tb "$build_dir/testbench/specular_tb")
+             args=${args//@WORK@/$dir/work/$id}; args=${args//@NETLISTS@/$dir/netlists}
+             rm -rf "$dir/work/$id" ;;
+    study) tool=("$build_dir/testbench/study/specular_study" --quiet --out "$dir/work/$id")
+           rm -rf "$dir/work/$id" ;;
+  esac
   # shellcheck disable=SC2086  # the arguments are words of our own task list
   /usr/bin/time -f '%e %U %S' -o "$dir/status/$id.time" \
-    "$build_dir/testbench/specular_$kind" $args --partial "$partial" >>"$log" 2>&1 || status=$?
+    "${tool[@]}" $args --partial "$partial" >>"$log" 2>&1 || status=$?
   ended=$(date +%s.%N)
   read -r wall user sys <"$dir/status/$id.time" 2>/dev/null || { wall=0 user=0 sys=0; }
   printf '{"id": %s, "group": "%s", "exit": %d, "wall_seconds": %s, "cpu_seconds": %s, "started": %s, "ended": %s, "host": "%s", "log": "%s"}\n' \
@@ -171,9 +200,16 @@ run_merge() {  # run_merge DIR
     kind=$(awk -F'\t' -v g="$group" '$2 == g {print $3; exit}' "$dir/tasks.tsv")
     local files=()
     while read -r id; do files+=("$dir/partials/$id.json"); done < <(awk -F'\t' -v g="$group" '$2 == g {print $1}' "$dir/tasks.tsv")
-    local extra=()
-    [[ $kind == tb ]] && extra=(--partial "$dir/merged/$group.json")
-    if "$build_dir/testbench/specular_$kind" --merge "${files[@]}" "${extra[@]}" \
+    local extra=() tool=("$build_dir/testbench/specular_$kind")
+    case $kind in
+      tb) extra=(--partial "$dir/merged/$group.json") ;;
+      gatesim) tool=(bash "$root/scripts/gatesim.sh")
+               extra=(--partial "$dir/merged/$group.json")
+               [[ $group != *_hazards ]] || extra+=(--output "$dir/merged/$group") ;;
+      study) tool=("$build_dir/testbench/study/specular_study")
+             extra=(--out "$dir/merged/$group") ;;
+    esac
+    if "${tool[@]}" --merge "${files[@]}" "${extra[@]}" \
         >"$dir/merged/$group.txt" 2>"$dir/merged/$group.err"; then
       echo "farm.sh merge: $group: PASS" >&2
     else
@@ -197,7 +233,7 @@ for line in open(os.path.join(d, "tasks.tsv")):
     tid, group, kind, args = line.rstrip("\n").split("\t")
     p = os.path.join(d, "status", tid + ".json")
     st = json.load(open(p)) if os.path.exists(p) else {"exit": None, "wall_seconds": None, "cpu_seconds": None}
-    tasks.append({"id": int(tid), "group": group, "command": "specular_%s %s" % (kind, args),
+    tasks.append({"id": int(tid), "group": group, "command": "%s %s" % ({"gatesim": "scripts/gatesim.sh", "study": "specular_study"}.get(kind, "specular_" + kind), args),
                   "exit": st.get("exit"), "wall_seconds": st.get("wall_seconds"),
                   "cpu_seconds": st.get("cpu_seconds"), "host": st.get("host"),
                   "log": "logs/task-%s.log" % tid})
@@ -289,11 +325,25 @@ case "$command" in
     tasks=$(regression_tasks "$regression")
     [[ -n $out_dir ]] || out_dir="$PWD/farm-$regression-$(date -u +%Y%m%dT%H%M%SZ)"
     [[ ! -e $out_dir || -z $(ls -A "$out_dir") ]] || die "--out: '$out_dir' exists and is not empty"
-    mkdir -p "$out_dir"/{logs,status,partials}
+    mkdir -p "$out_dir"/{logs,status,partials,work}
     out_dir=$(cd "$out_dir" && pwd)
     printf '%s\n' "$tasks" >"$out_dir/tasks.tsv"
     echo "$regression" >"$out_dir/regression"
     echo "$build" >"$out_dir/build_dir"
+    if cut -f3 "$out_dir/tasks.tsv" | grep -qx gatesim; then
+      # The gate-level tasks replay the mapped netlists: made once here (silicon.sh, about
+      # a minute per device) or taken from --netlists DIR (DIR/TOP/mapped.v ...).
+      mkdir -p "$out_dir/netlists"
+      for top in $(grep -o -- '--top [a-z_]*' "$out_dir/tasks.tsv" | awk '{print $2}' | sort -u); do
+        if [[ -n $netlists ]]; then
+          cp -r "$netlists/$top" "$out_dir/netlists/$top" || die "--netlists: no '$netlists/$top'"
+        else
+          echo "farm.sh: mapping $top (scripts/silicon.sh --no-gatesim)" >&2
+          bash "$root/scripts/silicon.sh" --top "$top" --no-gatesim "$out_dir/netlists/$top" "$build/rtl/rom/default" \
+            >"$out_dir/logs/netlist-$top.log" 2>&1 || die "silicon.sh failed for $top: see $out_dir/logs/netlist-$top.log"
+        fi
+      done
+    fi
     mapfile -t ids < <(cut -f1 "$out_dir/tasks.tsv")
     echo "farm.sh: regression $regression, ${#ids[@]} tasks, folder $out_dir" >&2
     launch "$out_dir" "${ids[@]}"

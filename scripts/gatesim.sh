@@ -8,6 +8,7 @@
 #   scripts/gatesim.sh [options] PERIOD_NS OUT_DIR [ROM_DIR]
 #   scripts/gatesim.sh [options] --bisect T_STA_NS OUT_DIR [ROM_DIR]
 #   scripts/gatesim.sh [options] --hazards T_SIM_NS OUT_DIR [ROM_DIR]
+#   scripts/gatesim.sh --merge [--output F|DIR] [--partial F] PARTIAL...
 #
 #   --top NAME          top module (default specular_device); its testbench settings are
 #                       scripts/silicon/NAME/gatesim.conf, or for a design variant's top
@@ -28,6 +29,19 @@
 #                       to back at 2 T), 1-8 (default 2)
 #   --specular-tb PATH  the testbench that writes the expected values (default
 #                       build/testbench/specular_tb)
+#   --shard I/N         run shard I (0-based) of N only (issue 25, docs/farm.md): a period
+#                       run and --bisect take the policies k with k mod N = I (in the
+#                       order of OUT_DIR/policies_all.txt; each shard bisects its own),
+#                       --hazards the units u (2 periods x 4 groups of 4 start offsets,
+#                       u = 4 p + g) with u mod N = I
+#   --partial FILE      write this run's partial result (JSON: settings and digests of
+#                       netlist, SDF, ROMs and vectors, commit, shard, per policy verdict,
+#                       vectors and first mismatch / T_sim / hazard sweep, timing)
+#   --merge PARTIAL...  merge a complete set of shards' partials into the unsharded run's
+#                       answer (exit 0 PASS, 1 FAIL; 2 and nothing written for a missing,
+#                       repeated or mismatched shard, named); --output F writes the text
+#                       (hazards: the folder of hazards.md/.json), --partial F the merged
+#                       partial (scripts/silicon/gatesim_partial.py)
 #   --quiet             no progress lines (drawn on standard error only when it is a
 #                       terminal: periods tried or policies' vectors run, the total,
 #                       rate and time left, by specular_progress beside specular_tb)
@@ -52,6 +66,11 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 
+if [[ ${1:-} == --merge ]]; then
+  shift
+  exec /usr/bin/python3 "$here/silicon/gatesim_partial.py" merge "$@"
+fi
+
 usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | grep '^#' | sed 's/^# \{0,1\}//'; }
 fail_args() { echo "gatesim.sh: $1 (see --help)" >&2; exit 2; }
 
@@ -67,18 +86,27 @@ hazards=""
 random_set=0
 groups_set=0
 quiet=0
+shard_index=0
+shard_count=1
+partial=""
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --quiet) quiet=1; shift ;;
-    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--vectors-tool)
+    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --policies) policies="$2" ;;
         --random) random="$2"; random_set=1 ;; --groups) groups="$2"; groups_set=1 ;;
         --specular-tb) specular_tb="$2" ;; --bisect) bisect="$2" ;; --hazards) hazards="$2" ;;
         --vectors-tool) vectors_tool="$2" ;;
+        --partial) partial="$2" ;;
+        --shard)
+          [[ "$2" =~ ^([0-9]{1,4})/([0-9]{1,4})$ ]] && (( BASH_REMATCH[2] >= 1 && BASH_REMATCH[2] <= 1000 \
+            && 10#${BASH_REMATCH[1]} < 10#${BASH_REMATCH[2]} )) \
+            || fail_args "--shard '$2': expected I/N, integers with 0 <= I < N and 1 <= N <= 1000"
+          shard_index=$((10#${BASH_REMATCH[1]})); shard_count=$((10#${BASH_REMATCH[2]})) ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -163,6 +191,32 @@ else
 /usr/bin/python3 "$here/silicon/gatesim_vectors.py" "$specular_tb" "$out" "$policies" "$groups" "$random" \
   > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
 fi
+# The shard's policies (a period run, --bisect): the k-th of the run's, k mod N = I.
+cp "$out/policies.txt" "$out/policies_all.txt"
+if [[ -z "$hazards" ]]; then
+  awk -v i="$shard_index" -v n="$shard_count" 'NF && (NR - 1) % n == i' "$out/policies_all.txt" > "$out/policies.txt"
+fi
+: > "$out/results.tsv"
+run_started=$SECONDS
+# The commit of the run (a partial names it; read at the start: the code that ran).
+run_commit=$(git -C "$root" rev-parse HEAD 2>/dev/null || echo unknown)
+[[ -z $(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null) ]] || run_commit+=-dirty
+mode=period; [[ -z "$bisect" ]] || mode=bisect; [[ -z "$hazards" ]] || mode=hazards
+# write_partial: OUT_DIR/partial.json (and --partial FILE) from this run's results.
+write_partial() {
+  {
+    echo "mode=$mode"; echo "top=$top"; echo "period=${period:-${bisect:-$hazards}}"
+    echo "policies=$policies"; echo "groups=$groups"; echo "random=$random"
+    echo "netlist_dir=$netlist_dir"; echo "rom_dir=$rom_dir"; echo "conf=$conf"; echo "root=$root"
+    echo "shard_index=$shard_index"; echo "shard_count=$shard_count"; echo "commit=$run_commit"
+    echo "wall_seconds=$((SECONDS - run_started))"; echo "hazard_units=${hazard_units:-}"
+  } > "$out/partial_info.txt"
+  times > "$out/times.txt"  # this shell's and its children's CPU (a builtin: not in a subshell)
+  echo "cpu=$(tr '\n' ' ' < "$out/times.txt")" >> "$out/partial_info.txt"
+  /usr/bin/python3 "$here/silicon/gatesim_partial.py" write "$out" "$out/partial.json" \
+    || { echo "gatesim.sh: writing the partial result failed" >&2; exit 1; }
+  [[ -z "$partial" ]] || cp "$out/partial.json" "$partial"
+}
 
 # compile_tb T VVP LOG [PROBE_TOP PROBE_FILE]: the testbench at period T for the policy
 # in $constants $normalisation $literal $vectors (the caller's), against the cell models,
@@ -192,22 +246,32 @@ progress() {  # DONE TOTAL UNIT
 policy_count=$(wc -l < "$out/policies.txt")
 policies_done=0
 
-# run_at PERIOD: every policy's vectors at that period; 0 all pass, 1 a mismatch.
+# run_at PERIOD: every policy's vectors at that period; 0 all pass, 1 a mismatch. A period
+# run goes on after a mismatch (every policy's verdict in results.tsv); the bisection
+# stops at the first (failed_policy names it).
+failed_policy=""
 run_at() {
-  local T="$1" dir="$out/T$1" status=0
+  local T="$1" dir="$out/T$1" status=0 started
   mkdir -p "$dir"
+  failed_policy=""
   while read -r name constants normalisation literal vectors; do
+    started=$SECONDS
     if ! compile_tb "$T" "$dir/$name.vvp" "$dir/$name.compile.log"; then
       echo "gatesim.sh: iverilog failed; see $dir/$name.compile.log" >&2
       return 2
     fi
     if ! (cd "$rom_dir" && vvp -n "$dir/$name.vvp") > "$dir/$name.log" 2>&1 \
        || ! grep -q "PASS" "$dir/$name.log"; then
-      echo "gatesim.sh: T = $T ns, policy $name: $(grep -m1 -E 'MISMATCH|fatal|FATAL|specular_device_tb:' "$dir/$name.log" || echo 'no result')"
+      first=$(grep -m1 -E 'MISMATCH|fatal|FATAL|specular_device_tb:' "$dir/$name.log" || echo 'no result')
+      echo "gatesim.sh: T = $T ns, policy $name: $first"
+      printf '%s\t%s\tFAIL\t%s\t%s\n' "$T" "$name" "$((SECONDS - started))" "$first" >> "$out/results.tsv"
       status=1
+      failed_policy=$name
+      [[ -n "$bisect" ]] || continue
       break
     fi
     echo "gatesim.sh: T = $T ns, policy $name: $(grep -m1 PASS "$dir/$name.log")"
+    printf '%s\t%s\tPASS\t%s\t\n' "$T" "$name" "$((SECONDS - started))" >> "$out/results.tsv"
     policies_done=$((policies_done + 1))
     [[ -n "$bisect" ]] || progress "$policies_done" "$policy_count" "policies' vectors"
   done < "$out/policies.txt"
@@ -217,17 +281,23 @@ run_at() {
 # ---- Fig. 2's hazards: start swept across a period, the reset pulse of flip-flop 41 ----
 # One compile per period (the testbench and the hazard probe of the top), one run per
 # start offset (+START_OFFSET, in periods); the probe's last HAZARD line is kept.
+# The work is 8 units, u = 4 p + g: period p (T_SIM, 2 T_SIM) and group g of the 16
+# offsets (4 g .. 4 g + 3; the last group also 0.499); a unit refines the boundaries
+# between its offsets and the one before them (which it runs first when the unit before
+# it is another shard's). Units u mod N = I are this shard's; each unit's sweep, boundaries
+# and logs go to hazards/unit<u>/, and the merge (gatesim_partial.py, also for the
+# unsharded run) gathers them into hazards/T<period>/ and writes the tables.
 if [[ -n "$hazards" ]]; then
   [[ -n "${TB_PROBE:-}" && -f "$TB_PROBE" ]] || fail_args "top '$top' has no hazard probe (TB_PROBE in $conf)"
   read -r name constants normalisation literal vectors < "$out/policies.txt"
   hz="$out/hazards"
   mkdir -p "$hz"
-  # run_offset T X: 0 pass, 1 fail; the log is $hz/T<T>/x<X>.log
   # Offset runs: 17 per period and its boundaries' refinements, about 24 a period
-  # (docs/silicon.md), 2 periods: the total is an estimate, raised as runs go past it.
+  # (docs/silicon.md): the total is an estimate, raised as runs go past it.
   offsets_done=0; offsets_total=48
+  # run_offset T X: 0 pass, 1 fail; the log is $ud/x<X>.log (the unit's folder)
   run_offset() {
-    local log="$hz/T$1/x$2.log" status=0
+    local log="$ud/x$2.log" status=0
     (cd "$rom_dir" && vvp -n "$hz/T$1/tb.vvp" "+START_OFFSET=$2") > "$log" 2>&1
     grep -q "PASS" "$log" || status=1
     offsets_done=$((offsets_done + 1))
@@ -242,38 +312,60 @@ if [[ -n "$hazards" ]]; then
     while (( $(echo "($b - $a) * $T > 0.1" | bc -l) )); do
       m=$(echo "($a + $b) / 2" | bc -l | xargs printf '%.6f')
       if run_offset "$T" "$m"; then m_ok=1; else m_ok=0; fi
-      echo "$m $m_ok" >> "$hz/T$T/sweep.txt"
+      echo "$m $m_ok" >> "$ud/sweep.txt"
       if [[ "$m_ok" == "$a_ok" ]]; then a=$m; else b=$m; fi
     done
-    echo "boundary $a $b $a_ok" >> "$hz/T$T/boundaries.txt"
+    echo "boundary $a $b $a_ok" >> "$ud/boundaries.txt"
   }
+  hazard_units=""
+  p=0
   for T in "$hazards" "$(echo "$hazards * 2" | bc -l | xargs printf '%.2f')"; do
-    mkdir -p "$hz/T$T"
-    compile_tb "$T" "$hz/T$T/tb.vvp" "$hz/T$T/compile.log" "$TB_PROBE_TOP" "$TB_PROBE" \
-      || { echo "gatesim.sh: iverilog failed; see $hz/T$T/compile.log" >&2; exit 1; }
-    : > "$hz/T$T/sweep.txt"
-    prev_x=""; prev_ok=""
-    for k in $(seq 0 15); do
-      x=$(echo "-0.5 + $k / 16" | bc -l | xargs printf '%.6f')
-      if run_offset "$T" "$x"; then ok=1; else ok=0; fi
-      echo "$x $ok" >> "$hz/T$T/sweep.txt"
-      echo "gatesim.sh: hazards T = $T ns, start offset $x T: $([[ $ok -eq 1 ]] && echo pass || grep -m1 -E 'MISMATCH|fatal|FATAL|specular_device_tb:' "$hz/T$T/x$x.log" || echo 'no result')"
-      # A boundary between two offsets: refine it to 0.1 ns.
-      [[ -z "$prev_ok" || "$ok" == "$prev_ok" ]] || refine "$T" "$prev_x" "$x" "$prev_ok"
-      prev_x=$x; prev_ok=$ok
+    prev_x=""; prev_ok=""; compiled=0
+    for g in 0 1 2 3; do
+      u=$((4 * p + g))
+      if (( u % shard_count != shard_index )); then prev_x=""; prev_ok=""; continue; fi
+      hazard_units+=" $u"
+      ud="$hz/unit$u"
+      mkdir -p "$ud" "$hz/T$T"
+      echo "$T" > "$ud/period"
+      : > "$ud/sweep.txt"
+      if [[ $compiled -eq 0 ]]; then
+        compile_tb "$T" "$hz/T$T/tb.vvp" "$hz/T$T/compile.log" "$TB_PROBE_TOP" "$TB_PROBE" \
+          || { echo "gatesim.sh: iverilog failed; see $hz/T$T/compile.log" >&2; exit 1; }
+        compiled=1
+      fi
+      if [[ $g -gt 0 && -z "$prev_ok" ]]; then  # the offset before the group: another shard's
+        prev_x=$(echo "-0.5 + $((4 * g - 1)) / 16" | bc -l | xargs printf '%.6f')
+        if run_offset "$T" "$prev_x"; then prev_ok=1; else prev_ok=0; fi
+      fi
+      for k in $(seq $((4 * g)) $((4 * g + 3))); do
+        x=$(echo "-0.5 + $k / 16" | bc -l | xargs printf '%.6f')
+        if run_offset "$T" "$x"; then ok=1; else ok=0; fi
+        echo "$x $ok" >> "$ud/sweep.txt"
+        echo "gatesim.sh: hazards T = $T ns, start offset $x T: $([[ $ok -eq 1 ]] && echo pass || grep -m1 -E 'MISMATCH|fatal|FATAL|specular_device_tb:' "$ud/x$x.log" || echo 'no result')"
+        # A boundary between two offsets: refine it to 0.1 ns.
+        [[ -z "$prev_ok" || "$ok" == "$prev_ok" ]] || refine "$T" "$prev_x" "$x" "$prev_ok"
+        prev_x=$x; prev_ok=$ok
+      done
+      # Start just before the falling edge (x -> 0.5, the same phase as the first offset
+      # -0.5 of the next edge): refine up to 0.5 when the last offset passes.
+      if [[ $g -eq 3 && "$ok" == 1 ]]; then
+        x=0.499000
+        if run_offset "$T" "$x"; then ok=1; else ok=0; fi
+        echo "$x $ok" >> "$ud/sweep.txt"
+        [[ "$ok" == 1 ]] || refine "$T" "$prev_x" "$x" 1
+      fi
     done
-    # Start just before the falling edge (x -> 0.5, the same phase as the first offset
-    # -0.5 of the next edge): refine up to 0.5 when the last offset passes.
-    if [[ "$ok" == 1 ]]; then
-      x=0.499000
-      if run_offset "$T" "$x"; then ok=1; else ok=0; fi
-      echo "$x $ok" >> "$hz/T$T/sweep.txt"
-      [[ "$ok" == 1 ]] || refine "$T" "$prev_x" "$x" 1
-    fi
+    p=$((p + 1))
   done
-  /usr/bin/python3 "$here/silicon/hazards_report.py" "$out" "$hazards" \
-    || { echo "gatesim.sh: the hazard report failed" >&2; exit 1; }
-  echo "gatesim.sh: hazards written to $out/hazards.md, $out/hazards.json"
+  write_partial
+  if [[ $shard_count -eq 1 ]]; then
+    /usr/bin/python3 "$here/silicon/gatesim_partial.py" merge --output "$out" "$out/partial.json" > /dev/null \
+      || { echo "gatesim.sh: the hazard report failed" >&2; exit 1; }
+    echo "gatesim.sh: hazards written to $out/hazards.md, $out/hazards.json"
+  else
+    echo "gatesim.sh: hazard units$hazard_units of shard $shard_index/$shard_count done; merge the shards' partials (--merge --output DIR)"
+  fi
   exit 0
 fi
 
@@ -283,25 +375,43 @@ if [[ -z "$bisect" ]]; then
   status=$?
   set -e
   [[ $status -le 1 ]] || exit 1
+  write_partial
   exit $status
 fi
 
 # ---- T_sim: bisection to 0.1 ns between T_sta/4 (must fail) and 2 T_sta (must pass) ----
+# A shard bisects its own policies; T_sim of the run is the largest of the shards' (a
+# period passes every policy when it passes each), which the merge takes.
 lo=$(printf '%.1f' "$(echo "$bisect / 4" | bc -l)")
 hi=$(printf '%.1f' "$(echo "$bisect * 2" | bc -l)")
+: > "$out/tsim_shard.txt"
+bisect_error() {  # MESSAGE: the shard's bisection failed
+  echo "gatesim.sh: $1" >&2
+  echo "error $1" >> "$out/tsim_shard.txt"
+  write_partial
+  exit 1
+}
+if [[ ! -s "$out/policies.txt" ]]; then
+  echo "gatesim.sh: shard $shard_index/$shard_count has no policy to bisect"
+  write_partial
+  exit 0
+fi
 # Periods to try: both ends and the halvings of (hi - lo) down to 0.1 ns.
 periods_total=$(echo "l(($hi - $lo) / 0.1) / l(2)" | bc -l | xargs printf '%.0f')
 periods_total=$((periods_total + 2)); periods_done=0
+declare -A failed_at
 set +e
 run_at "$hi"; s=$?
 periods_done=1; progress "$periods_done" "$periods_total" "periods tried"
-[[ $s -eq 0 ]] || { echo "gatesim.sh: fails even at 2 T_sta = $hi ns" >&2; exit 1; }
+[[ $s -eq 0 ]] || bisect_error "fails even at 2 T_sta = $hi ns"
 run_at "$lo"; s=$?
+failed_at[$lo]=$failed_policy
 periods_done=2; progress "$periods_done" "$periods_total" "periods tried"
-[[ $s -eq 1 ]] || { echo "gatesim.sh: passes at T_sta/4 = $lo ns: not sensitive to timing" >&2; exit 1; }
+[[ $s -eq 1 ]] || bisect_error "passes at T_sta/4 = $lo ns: not sensitive to timing"
 while (( $(echo "$hi - $lo > 0.1 + 0.0001" | bc) )); do
   mid=$(printf '%.1f' "$(echo "($lo + $hi) / 2" | bc -l)")
   run_at "$mid"; s=$?
+  failed_at[$mid]=$failed_policy
   periods_done=$((periods_done + 1))
   (( periods_done < periods_total )) || periods_total=$periods_done
   progress "$periods_done" "$periods_total" "periods tried"
@@ -309,10 +419,13 @@ while (( $(echo "$hi - $lo > 0.1 + 0.0001" | bc) )); do
   if [[ $s -eq 0 ]]; then hi=$mid; else lo=$mid; fi
 done
 set -e
+# The first failure at lo: the first policy (in the run's order) that failed there.
+first_policy=${failed_at[$lo]}
+first_failure=$(grep -h -m1 -E 'MISMATCH|fatal' "$out/T$lo/$first_policy.log" | head -1)
 {
   echo "t_sim_ns $hi"
   echo "fails_at_ns $lo"
-  echo "first_failure $(grep -h -m1 -E 'MISMATCH|fatal' "$out/T$lo"/*.log | head -1)"
+  echo "first_failure $first_failure"
   if [[ $VARIANT_VECTORS -eq 1 ]]; then
     echo "policies default (a design variant)"
     echo "vectors_per_policy $(( 18 + random ))"
@@ -321,4 +434,11 @@ set -e
     echo "vectors_per_policy $(( groups * 10 + random ))"
   fi
 } > "$out/tsim.txt"
-echo "gatesim.sh: T_sim = $hi ns (fails at $lo ns)"
+{
+  echo "t_sim_ns $hi"
+  echo "fails_at_ns $lo"
+  echo "first_failure $first_failure"
+  echo "first_failure_policy $(awk -v p="$first_policy" '$1 == p {print NR - 1; exit}' "$out/policies_all.txt")"
+} > "$out/tsim_shard.txt"
+write_partial
+echo "gatesim.sh: T_sim = $hi ns (fails at $lo ns)$([[ $shard_count -eq 1 ]] || echo " for the policies of shard $shard_index/$shard_count")"

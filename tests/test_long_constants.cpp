@@ -21,6 +21,11 @@
 namespace specular {
 namespace {
 
+// Each test covers the operation shard's slice of n: under GoogleTest's sharding, every
+// shard process runs it on its own slice (support/operation_shard.h).
+SPECULAR_OPERATION_SHARDED_SUITE(ExhaustiveConstants);
+SPECULAR_OPERATION_SHARDED_SUITE(ModelSweep);
+
 using Combination = std::tuple<Constants, Normalisation, Saturation>;
 
 std::string combination_name(const ::testing::TestParamInfo<Combination>& info) {

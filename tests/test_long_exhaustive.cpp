@@ -13,6 +13,10 @@
 namespace specular {
 namespace {
 
+// Each test covers the operation shard's slice of n: under GoogleTest's sharding, every
+// shard process runs it on its own slice (support/operation_shard.h).
+SPECULAR_OPERATION_SHARDED_SUITE(Exhaustive);
+
 using testing_support::SweepFigures;
 
 class Exhaustive : public testing_support::PolicyTest {};

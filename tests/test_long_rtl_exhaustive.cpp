@@ -21,6 +21,11 @@
 
 namespace specular {
 namespace {
+
+// Each test covers the operation shard's slice of n: under GoogleTest's sharding, every
+// shard process runs it on its own slice (support/operation_shard.h).
+SPECULAR_OPERATION_SHARDED_SUITE(RtlExhaustive);
+SPECULAR_OPERATION_SHARDED_SUITE(RtlSyncExhaustive);
 using testing_support::drawn_periods;
 using testing_support::expect_every_operation_equals_the_core;
 using testing_support::sync_periods;

@@ -18,6 +18,11 @@
 namespace specular {
 namespace {
 
+// Each test covers the operation shard's slice of n: under GoogleTest's sharding, every
+// shard process runs it on its own slice (support/operation_shard.h).
+SPECULAR_OPERATION_SHARDED_SUITE(RtlSyncFixedExhaustive);
+SPECULAR_OPERATION_SHARDED_SUITE(RtlFixedExhaustive);
+
 TEST(RtlSyncFixedExhaustive, EveryBuiltConfigurationEqualsTheCoreOnEveryCosCodeAndEveryN) {
   const std::vector<Config> configs = rtl_sync_fixed_configs();
   ASSERT_FALSE(configs.empty()) << "the default device's specialised model is always built";

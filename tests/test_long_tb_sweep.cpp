@@ -25,6 +25,12 @@ namespace specular {
 namespace tb {
 namespace {
 
+// Each test covers the operation shard's slice of n: under GoogleTest's sharding, every
+// shard process runs it on its own slice (support/operation_shard.h).
+SPECULAR_OPERATION_SHARDED_SUITE(PinSweep);
+SPECULAR_OPERATION_SHARDED_SUITE(RtlSweep);
+SPECULAR_OPERATION_SHARDED_SUITE(RtlSyncSweep);
+
 /// Runs the sweep on `model` under the test's policy and checks every result; every
 /// operation must take `expected_cycles` from start to 35↑ (the model's timing table).
 void sweep_against_core(Model model, const Config& config, double expected_cycles = 2.5) {

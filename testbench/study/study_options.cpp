@@ -19,14 +19,24 @@ std::vector<unsigned> StudyOptions::curve_n_values() { return {1, 2, 5, 10, 50, 
 std::vector<unsigned> StudyOptions::sphere_n_values() { return {1, 10, 100, 1000}; }
 
 std::string study_usage() {
-  return "usage: specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--help]\n"
+  return "usage: specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--shard I/N]\n"
+         "                      [--partial FILE] [--help]\n"
+         "       specular_study --merge PARTIAL... [--out DIR]\n"
          "  Measures the device's approximation of cos^n, its energy integrals and its\n"
          "  fixed-point widths, and writes CSV files for scripts/plot_study.py.\n"
          "  --out DIR    directory for the CSV files (created; default study-output)\n"
          "  --quick      n = 1, 10, 100, 1000 only and coarse grids (a few seconds)\n"
          "  --workers N  worker threads, 1 … 64 (default 2)\n"
          "  --quiet      no progress line (drawn on standard error only when it is a\n"
-         "               terminal: items done, total, rate, time left)\n";
+         "               terminal: items done, total, rate, time left)\n"
+         "  --shard I/N  run only the stages s with s mod N = I (0-based; the stages are\n"
+         "               0 constants search, 1 error study, 2 energy integrals, 3\n"
+         "               device-energy integrals, 4 width exploration, 5 sphere renders)\n"
+         "  --partial FILE  write this run's partial result (JSON: settings, commit, shard,\n"
+         "               the files written, what the summary needs, timing)\n"
+         "  --merge PARTIAL...  gather a complete set of shards' files into --out DIR and\n"
+         "               write the unsharded run's summary (exit 2, nothing written, for a\n"
+         "               missing, repeated or mismatched shard, named)\n";
 }
 
 StudyOptions parse_study_options(int argc, const char* const* argv) {
@@ -53,6 +63,14 @@ StudyOptions parse_study_options(int argc, const char* const* argv) {
       if (workers < 1 || workers > 64)
         throw UsageError("--workers " + text + " is outside the allowed range [1, 64]");
       options.workers = static_cast<unsigned>(workers);
+    } else if (arg == "--shard") {
+      options.shard = value();
+    } else if (arg == "--partial") {
+      options.partial = value();
+      if (options.partial.empty()) throw UsageError("--partial needs a file name");
+    } else if (arg == "--merge") {
+      while (i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) options.merge_files.push_back(argv[++i]);
+      if (options.merge_files.empty()) throw UsageError("--merge needs the partial files of every shard");
     } else if (arg == "--help" || arg == "-h") {
       options.help = true;
     } else {

@@ -19,6 +19,9 @@ struct StudyOptions {
   unsigned workers = 2;                  ///< worker threads
   bool quiet = false;                    ///< no progress line (it is drawn only on a terminal)
   bool help = false;
+  std::string shard = "0/1";               ///< --shard I/N: the stages s with s mod N = I
+  std::string partial;                     ///< --partial FILE: this run's partial result
+  std::vector<std::string> merge_files;    ///< --merge FILE...: merge these partials
 
   /// Every n the per-n stages visit: 1 … 1000, or a handful in quick mode.
   std::vector<unsigned> n_values() const;

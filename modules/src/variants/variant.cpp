@@ -1,17 +1,16 @@
 // The variants' registry: one line per variant (name, factory), the patent's first.
 #include "specular/variants/variant.h"
 
-#include "specular/variants/exp2.h"
-
 #include <functional>
 #include <stdexcept>
 #include <utility>
 
+#include "specular/variants/exp2.h"
 #include "specular/variants/one_pass.h"
-#include "specular/variants/us5739820.h"
-#include "specular/variants/us5739820_pipelined.h"
 #include "specular/variants/schlick.h"
 #include "specular/variants/schlick_divider.h"
+#include "specular/variants/us5739820.h"
+#include "specular/variants/us5739820_pipelined.h"
 
 namespace specular {
 namespace variants {

@@ -48,7 +48,10 @@ struct Mismatch {
 };
 
 void expect_rtl_equals_model(bool every) {
-  const auto shard = specular::testing_support::operation_shard();
+  // The whole run splits its n across shards (SPECULAR_OPERATION_SHARD or GoogleTest's);
+  // the quick slice takes every n in every shard.
+  const auto shard = every ? specular::testing_support::operation_shard()
+                           : specular::testing_support::OperationShard{};
   const auto model = specular::variants::make_variant(VARIANT_NAME);
   const std::vector<code_t> codes = cos_codes(every);
   std::vector<unsigned> ns;
@@ -77,6 +80,7 @@ void expect_rtl_equals_model(bool every) {
 }  // namespace
 
 #ifdef VARIANT_EXHAUSTIVE
+SPECULAR_OPERATION_SHARDED_SUITE(VariantRtl);
 TEST(VariantRtl, EveryCosCodeAndEveryNEqualsTheModel) { expect_rtl_equals_model(true); }
 #else
 TEST(VariantRtl, EveryNOnACosSliceEqualsTheModel) { expect_rtl_equals_model(false); }

@@ -33,20 +33,27 @@ class CountingBuf : public std::streambuf {
     return ch;
   }
 };
+/// The testbench's stimuli for a ring of operands (both row writers time the same rows).
+std::vector<specular::tb::Stimulus> stimulus_ring(const specular::Core& core,
+                                                  const std::vector<Operands>& ring) {
+  std::vector<specular::tb::Stimulus> stimuli(ring.size());
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    specular::tb::Stimulus& s = stimuli[i];
+    s.operands = ring[i];
+    s.cos = core.formats().cos.to_real(ring[i].cos);
+    s.n = static_cast<unsigned>(ring[i].n);
+    for (int ch = 0; ch < 3; ++ch) s.rgb[ch] = static_cast<unsigned>(ring[i].rgb[ch]);
+  }
+  return stimuli;
+}
+
 }  // namespace
 
 void measure_rows(const Plan& plan, const std::string& name, bool json) {
   namespace tb = specular::tb;
   const specular::Core core;
   const std::vector<Operands> ring = random_operands(core, plan.seed);
-  std::vector<tb::Stimulus> stimuli(ring_size);
-  for (std::size_t i = 0; i < ring_size; ++i) {
-    tb::Stimulus& s = stimuli[i];
-    s.operands = ring[i];
-    s.cos = core.formats().cos.to_real(ring[i].cos);
-    s.n = static_cast<unsigned>(ring[i].n);
-    for (int ch = 0; ch < 3; ++ch) s.rgb[ch] = static_cast<unsigned>(ring[i].rgb[ch]);
-  }
+  const std::vector<tb::Stimulus> stimuli = stimulus_ring(core, ring);
   double best = 1e300;
   std::size_t bytes = 0;
   for (int rep = 0; rep < plan.repetitions; ++rep) {
@@ -88,14 +95,7 @@ void measure_rows_nlohmann(const Plan& plan, const std::string& name, bool seria
   const specular::Core core;
   const specular::Formats& f = core.formats();
   const std::vector<Operands> ring = random_operands(core, plan.seed);
-  std::vector<tb::Stimulus> stimuli(ring_size);
-  for (std::size_t i = 0; i < ring_size; ++i) {
-    tb::Stimulus& s = stimuli[i];
-    s.operands = ring[i];
-    s.cos = core.formats().cos.to_real(ring[i].cos);
-    s.n = static_cast<unsigned>(ring[i].n);
-    for (int ch = 0; ch < 3; ++ch) s.rgb[ch] = static_cast<unsigned>(ring[i].rgb[ch]);
-  }
+  const std::vector<tb::Stimulus> stimuli = stimulus_ring(core, ring);
   const auto hex = [](std::uint64_t v, int bits) {
     char text[24];
     std::snprintf(text, sizeof text, "%0*llx", (bits + 3) / 4, static_cast<unsigned long long>(v));

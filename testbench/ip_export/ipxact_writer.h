@@ -21,5 +21,13 @@ struct ComponentFacts {
 
 std::string ipxact_component(const ComponentFacts& facts);
 
+/// The bus definition and the (TLM) abstraction definition the component's bus
+/// interface names: TLM-2.0's generic payload through a 32-bit socket.
+std::string ipxact_bus_definition();
+std::string ipxact_abstraction_definition();
+/// Their file names in ip/ (the component names them by VLNV only).
+constexpr const char* bus_definition_file = "tlm2_generic_payload.busdef.xml";
+constexpr const char* abstraction_definition_file = "tlm2_generic_payload.absdef.xml";
+
 }  // namespace ip_export
 }  // namespace specular

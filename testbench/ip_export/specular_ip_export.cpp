@@ -7,6 +7,8 @@
 //   --ipxact FILE     the IEEE 1685-2014 component (ip/specular_unit.xml)
 //   --systemrdl FILE  the SystemRDL 2.0 addrmap (ip/specular_unit.rdl)
 //   --json FILE       the C++ map as plain JSON, for the tests (no writer's code)
+//   --bus-dir DIR     the bus and abstraction definitions of the socket's bus type
+//                     (ip/tlm2_generic_payload.busdef.xml, .absdef.xml)
 //   --source-dir DIR  the source tree: rtl/ holds the Verilog tops
 //   --version V       the component's version (default: the package's)
 //   --libdir D        the install's library folder, relative to the prefix (default lib)
@@ -32,7 +34,7 @@ namespace {
 
 const char* usage =
     "usage: specular_ip_export --source-dir DIR [--version V] [--libdir D]\n"
-    "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE]\n";
+    "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE] [--bus-dir DIR]\n";
 
 bool write(const std::string& path, const std::string& text) {
   if (path == "-") {
@@ -56,7 +58,7 @@ int main(int argc, char** argv) {
   std::map<std::string, std::string> options{{"--version", SPECULAR_PACKAGE_VERSION},
                                              {"--libdir", "lib"}};
   const std::vector<std::string> known{"--source-dir", "--version", "--libdir",
-                                       "--ipxact",     "--systemrdl", "--json"};
+                                       "--ipxact",     "--systemrdl", "--json", "--bus-dir"};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help") {
@@ -68,19 +70,27 @@ int main(int argc, char** argv) {
     if (!is_known || i + 1 >= argc) {
       std::cerr << "specular_ip_export: error: "
                 << (is_known ? "'" + arg + "' needs a value" : "unknown option '" + arg + "'")
-                << "; the options are --source-dir, --version, --libdir, --ipxact, --systemrdl, --json\n"
+                << "; the options are --source-dir, --version, --libdir, --ipxact, --systemrdl, --json, "
+                   "--bus-dir\n"
                 << usage;
       return 2;
     }
     options[arg] = argv[++i];
   }
-  if (!options.count("--ipxact") && !options.count("--systemrdl") && !options.count("--json")) {
-    std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl or --json\n"
+  if (!options.count("--ipxact") && !options.count("--systemrdl") && !options.count("--json") &&
+      !options.count("--bus-dir")) {
+    std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl, --json "
+                 "or --bus-dir\n"
               << usage;
     return 2;
   }
   bool ok = true;
   if (options.count("--json")) ok = write(options["--json"], register_map_json()) && ok;
+  if (options.count("--bus-dir")) {
+    ok = write(options["--bus-dir"] + "/" + bus_definition_file, ipxact_bus_definition()) && ok;
+    ok = write(options["--bus-dir"] + "/" + abstraction_definition_file,
+               ipxact_abstraction_definition()) && ok;
+  }
   if (options.count("--systemrdl"))
     ok = write(options["--systemrdl"], systemrdl_addrmap(options["--version"])) && ok;
   if (options.count("--ipxact")) {

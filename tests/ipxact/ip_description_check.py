@@ -118,22 +118,61 @@ def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word):
         fail.equal(values, [(v["name"], v["value"]) for v in cf["values"]], f"{at} enumeratedValues")
 
 
+BUS_FILES = ("tlm2_generic_payload.busdef.xml", "tlm2_generic_payload.absdef.xml")
+
+
+def vlnv_of(root):
+    return tuple(text_of(root, t) for t in ("vendor", "library", "name", "version"))
+
+
+def vlnv_ref(element):
+    return tuple(element.get(a) for a in ("vendor", "library", "name", "version"))
+
+
+def check_bus_interface(fail, root, bus_trees):
+    """The socket's bus type and abstraction resolve to the definitions in ip/, and its
+    port map joins a logical port of the abstraction to a port of the model."""
+    bus_def = bus_trees[BUS_FILES[0]].getroot()
+    abs_def = bus_trees[BUS_FILES[1]].getroot()
+    fail.equal(bus_def.tag, Q + "busDefinition", BUS_FILES[0])
+    fail.equal(abs_def.tag, Q + "abstractionDefinition", BUS_FILES[1])
+    def same(got, want, what):
+        fail.check(got == want, f"{what}: {got!r}, the definition in ip/ is {want!r}")
+    same(vlnv_ref(abs_def.find(Q + "busType")), vlnv_of(bus_def), "the abstraction's busType")
+    interfaces = root.findall(f"{Q}busInterfaces/{Q}busInterface")
+    fail.equal(len(interfaces), 1, "bus interfaces")
+    for bi in interfaces:
+        same(vlnv_ref(bi.find(Q + "busType")), vlnv_of(bus_def), "busType")
+        refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
+        same([vlnv_ref(r) for r in refs], [vlnv_of(abs_def)], "abstractionRef")
+        logical = {text_of(p, "logicalName") for p in abs_def.findall(f"{Q}ports/{Q}port")}
+        physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
+        for pm in bi.iter(Q + "portMap"):
+            lp = pm.find(f"{Q}logicalPort/{Q}name").text
+            pp = pm.find(f"{Q}physicalPort/{Q}name").text
+            fail.check(lp in logical, f"portMap: no logical port {lp} in {BUS_FILES[1]}")
+            fail.check(pp in physical, f"portMap: no port {pp} in the model")
+
+
 def check_ipxact(export, source, scratch):
     from lxml import etree
     fail = Failures()
     cpp = cpp_map(export, scratch)
     path = os.path.join(source, "ip", "specular_unit.xml")
     tree = etree.parse(path)  # raises on a file that is not well-formed
+    bus_trees = {name: etree.parse(os.path.join(source, "ip", name)) for name in BUS_FILES}
     schema = os.environ.get("SPECULAR_IPXACT_SCHEMA", "")
     if schema:
         xsd = etree.XMLSchema(etree.parse(schema))
-        ok = xsd.validate(tree)
-        fail.check(ok, f"not valid against {schema}: " +
-                   "; ".join(str(e) for e in list(xsd.error_log)[:5]))
-        print(f"ipxact: validated against {schema}: {'valid' if ok else 'INVALID'}")
+        for name, t in [("specular_unit.xml", tree)] + list(bus_trees.items()):
+            ok = xsd.validate(t)
+            fail.check(ok, f"{name} not valid against {schema}: " +
+                       "; ".join(str(e) for e in list(xsd.error_log)[:5]))
+            print(f"ipxact: {name} validated against {schema}: {'valid' if ok else 'INVALID'}")
     else:
         print("ipxact: SPECULAR_IPXACT_SCHEMA not set: well-formedness and structure only")
     root = tree.getroot()
+    check_bus_interface(fail, root, bus_trees)
     fail.equal(root.tag, Q + "component", "root element")
     for tag in ("vendor", "library", "name", "version"):
         fail.check(bool(text_of(root, tag)), f"VLNV: no {tag}")
@@ -349,11 +388,11 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
 def check_current(export, source, scratch):
     fail = Failures()
     fresh = {"specular_unit.xml": "--ipxact", "specular_unit.rdl": "--systemrdl"}
-    args = [export, "--source-dir", source]
+    args = [export, "--source-dir", source, "--bus-dir", scratch]
     for name, option in fresh.items():
         args += [option, os.path.join(scratch, name)]
     subprocess.run(args, check=True)
-    for name in fresh:
+    for name in list(fresh) + list(BUS_FILES):
         with open(os.path.join(scratch, name), "rb") as f:
             now = f.read()
         committed_path = os.path.join(source, "ip", name)
@@ -361,7 +400,7 @@ def check_current(export, source, scratch):
         fail.check(now == committed,
                    f"ip/{name} differs from what specular_ip_export writes now; run "
                    f"specular_ip_export --source-dir . --ipxact ip/specular_unit.xml "
-                   f"--systemrdl ip/specular_unit.rdl")
+                   f"--systemrdl ip/specular_unit.rdl --bus-dir ip")
     return fail.finish("current")
 
 

@@ -253,6 +253,9 @@ VerilogModule read_module_header(const std::string& path) {
 
 std::map<std::string, VerilogModule> read_modules(const std::string& dir) {
   std::vector<std::string> paths;
+  std::error_code error;
+  if (!std::filesystem::is_directory(dir, error))
+    throw VerilogError("'" + dir + "' is not a folder (--source-dir names the source tree, whose rtl/ holds the Verilog)");
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".v") paths.push_back(entry.path().string());
   std::sort(paths.begin(), paths.end());

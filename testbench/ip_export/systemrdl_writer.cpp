@@ -56,7 +56,9 @@ std::string access_properties(Access access) {
   switch (access) {
     case Access::read_only: return "sw = r; hw = w;";
     case Access::read_write: return "sw = rw; hw = r;";
-    case Access::write_1_to_clear: return "sw = rw; hw = w; onwrite = woclr;";
+    // the device sets it (hwset: it need not be hw-writable) and reads it (DONE drives
+    // done_irq); software writes 1 to clear it
+    case Access::write_1_to_clear: return "sw = rw; hw = r; hwset; onwrite = woclr;";
     case Access::self_clearing: return "sw = w; hw = r; singlepulse;";  // reads 0
   }
   return "";

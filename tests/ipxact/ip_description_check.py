@@ -42,12 +42,12 @@ IPXACT_ACCESS = {
 }
 # C++ Access -> SystemRDL properties that must hold
 RDL_ACCESS = {
-    "read_only": {"sw": "r"},
-    "read_write": {"sw": "rw"},
-    "write_1_to_clear": {"sw": "rw", "onwrite": "woclr"},
-    "self_clearing": {"sw": "w", "singlepulse": True},
+    "read_only": {"sw": "r", "hw": "w"},  # the device writes it
+    "read_write": {"sw": "rw", "hw": "r"},  # storage the device reads
+    "write_1_to_clear": {"sw": "rw", "hw": "r", "onwrite": "woclr", "hwset": True},
+    "self_clearing": {"sw": "w", "hw": "r", "singlepulse": True},
 }
-RDL_WRITE_EFFECTS = ("onwrite", "singlepulse", "onread", "woclr", "woset")
+RDL_WRITE_EFFECTS = ("onwrite", "singlepulse", "onread", "hwset", "hwclr", "woclr", "woset")
 
 
 class Failures:

@@ -114,8 +114,9 @@ constexpr bool field_map_is_consistent() {
     const FieldInfo& f = field_map[i];
     if (f.width == 0 || f.shift + f.width > 32) return false;
     if (info(f.reg).words != 1) return false;  // windows take their registers' fields
-    for (std::size_t j = 0; j < i; ++j)        // fields of a row do not overlap
-      if (field_map[j].reg == f.reg && (field_map[j].mask() & f.mask()) != 0) return false;
+    for (std::size_t j = 0; j < i; ++j)  // fields of a row do not overlap, lowest bit first
+      if (field_map[j].reg == f.reg && ((field_map[j].mask() & f.mask()) != 0 || field_map[j].shift > f.shift))
+        return false;
     // an enumeration fits its field
     if (value_count(f.values) > 0 && value_count(f.values) - 1 > (f.mask() >> f.shift))
       return false;
@@ -130,8 +131,8 @@ constexpr std::uint32_t field_mask(Reg reg, std::size_t nth) {
 }  // namespace detail
 
 static_assert(detail::field_map_is_consistent(),
-              "field_map: fields inside 32 bits, on single registers, not overlapping, "
-              "enumerations fitting their fields");
+              "field_map: fields inside 32 bits, on single registers, lowest bit first, not "
+              "overlapping, enumerations fitting their fields");
 // The table says what register_map.h's constants say.
 static_assert(detail::field_mask(Reg::status, 0) == status_bits::busy &&
                   detail::field_mask(Reg::status, 1) == status_bits::done &&

@@ -48,7 +48,7 @@ if named=$( (grep -rlF --include='*.cmake' -e "$build/" -e "$work/install_first"
 fi
 (cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
 echo "   ... $(wc -l <"$work/files.txt") files"
-unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake)$' \
+unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/[a-z0-9_]+\.(v|hex)))$' \
              "$work/files.txt" || true)
 if [[ -n "$unexpected" ]]; then
   echo "consumer_check: FAIL: the install holds more than the IP:" >&2
@@ -57,6 +57,14 @@ if [[ -n "$unexpected" ]]; then
 fi
 grep -q '^\./include/specular/specular\.h$' "$work/files.txt"
 grep -q '^\./lib[^/]*/libspecular_core\.a$' "$work/files.txt"  # SpecularUnit::core (issue 29)
+grep -q '^\./share/SpecularUnit/ip/specular_unit\.xml$' "$work/files.txt"  # IP-XACT (docs/ipxact.md)
+# Every file the installed IP-XACT component names (relative to it) is installed; the
+# twin's headers and libraries only in a build with the RTL twin.
+while read -r named; do
+  if [[ $rtl != ON && ( $named == *twin* || $named == *rtl_models* ) ]]; then continue; fi
+  [[ -e "$work/prefix/share/SpecularUnit/ip/$named" ]] ||
+    { echo "consumer_check: FAIL: specular_unit.xml names $named, which is not installed" >&2; exit 1; }
+done < <(sed -n 's|.*<ipxact:[a-z]*>\(\.\./[^<]*\)<.*|\1|p' "$work/prefix/share/SpecularUnit/ip/specular_unit.xml")
 if [[ $rtl == ON ]]; then grep -q '^\./include/specular/twin/rtl_target\.h$' "$work/files.txt"; fi
 
 # The SystemC BUILD was built with, as the package records it (cmake/SpecularSystemC.cmake):

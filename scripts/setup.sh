@@ -44,6 +44,7 @@ PACKAGES=(
   qflow-tech-osu018 opensta bc
   nlohmann-json3-dev
   slurm-wlm munge jq
+  python3-lxml  # tests/ipxact: reads the IP-XACT component back with an XML library (docs/ipxact.md)
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

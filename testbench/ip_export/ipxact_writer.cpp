@@ -1,0 +1,559 @@
+#include "ipxact_writer.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <map>
+#include <sstream>
+
+#include "specular/tlm/field_map.h"
+#include "specular/tlm/register_map.h"
+
+namespace specular {
+namespace ip_export {
+namespace {
+
+std::string escape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+/// A SystemVerilog-style literal, as IP-XACT 2014's expressions take: 'h0005_9965.
+std::string hex_literal(std::uint32_t value) {
+  char buffer[16];
+  std::snprintf(buffer, sizeof buffer, "'h%08X", value);
+  return buffer;
+}
+
+const char* const vendor = "specular-unit";
+const char* const bus_library = "interface";
+const char* const bus_name = "tlm2_generic_payload";
+const char* const abstraction_name = "tlm2_generic_payload_tlm";
+const char* const bus_version = "1.0";
+
+std::string vlnv_attributes(const char* name) {
+  return std::string("vendor=\"") + vendor + "\" library=\"" + bus_library + "\" name=\"" + name +
+         "\" version=\"" + bus_version + "\"";
+}
+
+/// An indenting writer of the few element shapes the component has.
+class Xml {
+ public:
+  void open(const std::string& tag, const std::string& attributes = "") {
+    line("<ipxact:" + tag + (attributes.empty() ? "" : " " + attributes) + ">");
+    ++depth_;
+  }
+  void close(const std::string& tag) {
+    --depth_;
+    line("</ipxact:" + tag + ">");
+  }
+  void leaf(const std::string& tag, const std::string& text, const std::string& attributes = "") {
+    line("<ipxact:" + tag + (attributes.empty() ? "" : " " + attributes) + ">" + escape(text) +
+         "</ipxact:" + tag + ">");
+  }
+  void empty(const std::string& tag, const std::string& attributes) {
+    line("<ipxact:" + tag + " " + attributes + "/>");
+  }
+  void line(const std::string& text) { out_ << std::string(2 * depth_, ' ') << text << "\n"; }
+  std::string str() const { return out_.str(); }
+
+ private:
+  std::ostringstream out_;
+  int depth_ = 0;
+};
+
+/// IP-XACT's words for a field's access: access, modifiedWriteValue (or "").
+struct FieldAccessWords {
+  const char* access;
+  const char* modified_write_value;
+};
+
+FieldAccessWords access_words(Access access) {
+  switch (access) {
+    case Access::read_only: return {"read-only", ""};
+    case Access::read_write: return {"read-write", ""};
+    case Access::write_1_to_clear: return {"read-write", "oneToClear"};
+    // A write of 1 acts and the field reads 0: "modify" (the value after a write is
+    // not the value written; the description says how).
+    case Access::self_clearing: return {"read-write", "modify"};
+  }
+  return {"read-only", ""};
+}
+
+/// The register's own access: read-only if every field is, else read-write.
+const char* register_access(Reg reg) {
+  for (const FieldInfo& f : fields_of(reg))
+    if (f.access != Access::read_only) return "read-write";
+  return "read-only";
+}
+
+void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset) {
+  x.open("field");
+  x.leaf("name", f.name);
+  x.leaf("description", f.description);
+  x.leaf("bitOffset", std::to_string(f.shift));
+  x.open("resets");
+  x.open("reset");
+  x.leaf("value", hex_literal((register_reset & f.mask()) >> f.shift));
+  x.close("reset");
+  x.close("resets");
+  x.leaf("bitWidth", std::to_string(f.width));
+  if (f.access == Access::write_1_to_clear || f.access == Access::self_clearing ||
+      f.values == FieldValues::error_cause || f.reg == Reg::status)
+    x.leaf("volatile", "true");  // the device changes it
+  const FieldAccessWords words = access_words(f.access);
+  x.leaf("access", words.access);
+  if (f.values != FieldValues::none) {
+    x.open("enumeratedValues");
+    for (std::uint32_t code = 0; code < value_count(f.values); ++code) {
+      x.open("enumeratedValue");
+      x.leaf("name", value_name(f.values, code));
+      x.leaf("description", value_description(f.values, code));
+      x.leaf("value", std::to_string(code));
+      x.close("enumeratedValue");
+    }
+    x.close("enumeratedValues");
+  }
+  if (*words.modified_write_value) x.leaf("modifiedWriteValue", words.modified_write_value);
+  x.close("field");
+}
+
+/// A single register `reg` at `offset` (its own, or its word in an alias window).
+void write_register(Xml& x, Reg reg, std::uint32_t offset, std::uint32_t reset,
+                    const std::string& description) {
+  const RegisterInfo& row = info(reg);
+  x.open("register");
+  x.leaf("name", row.name);
+  x.leaf("description", description);
+  x.leaf("addressOffset", hex_literal(offset));
+  x.leaf("size", "32");
+  x.leaf("access", register_access(reg));
+  for (const FieldInfo& f : fields_of(reg)) write_field(x, f, reset);
+  x.close("register");
+}
+
+bool is_alias_window(const RegisterInfo& row) {
+  return row.reg == Reg::operands || row.reg == Reg::results;
+}
+
+void write_memory_map(Xml& x) {
+  x.open("memoryMaps");
+  x.open("memoryMap");
+  x.leaf("name", "registers");
+  x.leaf("description", "The TLM-2.0 target's registers and windows (docs/tlm.md)");
+  x.open("addressBlock");
+  x.leaf("name", "specular");
+  x.leaf("description",
+         "Every register and window; bytes outside them are holes (TLM_ADDRESS_ERROR_RESPONSE)");
+  x.leaf("baseAddress", hex_literal(0));
+  x.leaf("range", hex_literal(map_size));
+  x.leaf("width", "32");
+  x.leaf("usage", "register");
+  for (const RegisterInfo& row : register_map) {
+    if (row.words == 1) {
+      write_register(x, row.reg, row.offset, row.reset, row.description);
+    } else if (is_alias_window(row)) {
+      // A register file of the registers it aliases, each with its own fields and reset.
+      x.open("registerFile");
+      x.leaf("name", row.name);
+      x.leaf("description", row.description);
+      x.leaf("addressOffset", hex_literal(row.offset));
+      x.leaf("range", hex_literal(4 * row.words));
+      for (std::uint32_t w = 0; w < row.words; ++w) {
+        const Reg alias = row.reg == Reg::operands ? operand_register(w) : result_register(w);
+        write_register(x, alias, 4 * w, reset_of_word(row, w),
+                       std::string("Alias of ") + info(alias).name + " (" +
+                           hex_literal(info(alias).offset) + "): " + info(alias).description);
+      }
+      x.close("registerFile");
+    } else {
+      // A window of like words: a register array.
+      x.open("register");
+      x.leaf("name", row.name);
+      x.leaf("description", row.description);
+      x.leaf("dim", std::to_string(row.words));
+      x.leaf("addressOffset", hex_literal(row.offset));
+      x.leaf("size", "32");
+      x.leaf("access", register_access(row.reg));
+      for (const FieldInfo& f : fields_of(row.reg)) write_field(x, f, row.reset);
+      x.close("register");
+    }
+  }
+  x.close("addressBlock");
+  x.leaf("addressUnitBits", "8");
+  x.close("memoryMap");
+  x.close("memoryMaps");
+}
+
+// ---- the model: views, instantiations, ports ----------------------------------------
+
+struct SystemCView {
+  const char* view;
+  const char* module;
+  const char* description;
+};
+const SystemCView systemc_views[] = {
+    {"tlm_lt", "specular::SpecularLtTarget",
+     "Loosely timed: the bit-accurate core with annotated latency (specular/tlm/lt_target.h)"},
+    {"tlm_pin", "specular::SpecularPinTarget",
+     "The pin-level SystemC netlist behind a transactor (specular/tlm/pin_target.h)"},
+    {"tlm_rtl", "specular::SpecularRtlTarget",
+     "The verilated specular_device behind a transactor (specular/twin/rtl_target.h, "
+     "find_package COMPONENTS rtl)"},
+    {"tlm_rtl_sync", "specular::SpecularRtlSyncTarget",
+     "The verilated specular_device_sync behind a transactor (specular/twin/rtl_sync_target.h, "
+     "find_package COMPONENTS rtl)"},
+};
+
+std::string view_of_top(const VerilogModule& top) {
+  return top.name == "specular_device" ? "rtl" : top.name == "specular_device_sync" ? "rtl_sync" : top.name;
+}
+std::string prefix_of_top(const VerilogModule& top) {
+  return top.name == "specular_device" ? "device" : top.name == "specular_device_sync" ? "sync" : top.name;
+}
+
+void write_views(Xml& x, const ComponentFacts& facts) {
+  x.open("views");
+  for (const SystemCView& v : systemc_views) {
+    x.open("view");
+    x.leaf("name", v.view);
+    x.leaf("description", v.description);
+    x.leaf("envIdentifier", "systemc:*:*");
+    x.leaf("componentInstantiationRef", v.view);
+    x.close("view");
+  }
+  for (const VerilogModule& top : facts.tops) {
+    x.open("view");
+    x.leaf("name", view_of_top(top));
+    x.leaf("description", "The Verilog top " + top.name + " (" + top.file + ")");
+    x.leaf("envIdentifier", "verilog:*:*");
+    x.leaf("componentInstantiationRef", view_of_top(top));
+    x.close("view");
+  }
+  x.close("views");
+}
+
+void write_instantiations(Xml& x, const ComponentFacts& facts) {
+  x.open("instantiations");
+  for (const SystemCView& v : systemc_views) {
+    x.open("componentInstantiation");
+    x.leaf("name", v.view);
+    x.leaf("language", "systemc");
+    x.leaf("moduleName", v.module);
+    x.open("fileSetRef");
+    x.leaf("localName", "systemc_headers");
+    x.close("fileSetRef");
+    x.open("fileSetRef");
+    x.leaf("localName", "systemc_libraries");
+    x.close("fileSetRef");
+    x.close("componentInstantiation");
+  }
+  for (std::size_t t = 0; t < facts.tops.size(); ++t) {
+    const VerilogModule& top = facts.tops[t];
+    x.open("componentInstantiation");
+    x.leaf("name", view_of_top(top));
+    x.leaf("language", "verilog");
+    x.leaf("moduleName", top.name);
+    x.open("moduleParameters");
+    for (const VerilogParameter& p : top.parameters) {
+      x.open("moduleParameter", "parameterId=\"" + prefix_of_top(top) + "_" + p.name +
+                                    "\" resolve=\"user\" type=\"" +
+                                    (p.is_string ? "string" : "longint") + "\"");
+      x.leaf("name", p.name);
+      if (p.width > 0) {
+        x.open("vectors");
+        x.open("vector");
+        x.leaf("left", std::to_string(p.width - 1));
+        x.leaf("right", "0");
+        x.close("vector");
+        x.close("vectors");
+      }
+      x.leaf("value", p.is_string ? "\"" + p.text + "\"" : std::to_string(p.value));
+      x.close("moduleParameter");
+    }
+    x.close("moduleParameters");
+    x.open("fileSetRef");
+    x.leaf("localName", "verilog_" + view_of_top(top));
+    x.close("fileSetRef");
+    x.close("componentInstantiation");
+  }
+  x.close("instantiations");
+}
+
+void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string>& views,
+                     const std::string& presence) {
+  x.open("port");
+  x.leaf("name", p.name);
+  if (!presence.empty()) x.leaf("isPresent", presence);
+  x.open("wire");
+  x.leaf("direction", p.direction);
+  if (p.is_vector) {
+    x.open("vectors");
+    x.open("vector");
+    x.leaf("left", std::to_string(p.msb));
+    x.leaf("right", std::to_string(p.lsb));
+    x.close("vector");
+    x.close("vectors");
+  }
+  x.open("wireTypeDefs");
+  x.open("wireTypeDef");
+  x.leaf("typeName", p.is_signed ? "wire signed" : "wire");
+  for (const std::string& v : views) x.leaf("viewRef", v);
+  x.close("wireTypeDef");
+  x.close("wireTypeDefs");
+  x.close("wire");
+  x.close("port");
+}
+
+void write_ports(Xml& x, const ComponentFacts& facts) {
+  x.open("ports");
+  // The SystemC targets' socket and interrupt.
+  x.open("port");
+  x.leaf("name", "socket");
+  x.leaf("description",
+         "tlm_utils::simple_target_socket<T, 32>: the registers of memory map 'registers'");
+  x.open("transactional");
+  x.leaf("initiative", "provides");
+  x.leaf("busWidth", "32");
+  x.open("transTypeDefs");
+  x.open("transTypeDef");
+  x.leaf("typeName", "tlm_utils::simple_target_socket");
+  for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
+  x.close("transTypeDef");
+  x.close("transTypeDefs");
+  x.close("transactional");
+  x.close("port");
+  x.open("port");
+  x.leaf("name", "done_irq");
+  x.leaf("description", "Level: high while STATUS.DONE is set (sc_core::sc_out<bool>; may stay unbound)");
+  x.open("wire");
+  x.leaf("direction", "out");
+  x.open("wireTypeDefs");
+  x.open("wireTypeDef");
+  x.leaf("typeName", "sc_core::sc_out<bool>");
+  for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
+  x.close("wireTypeDef");
+  x.close("wireTypeDefs");
+  x.close("wire");
+  x.close("port");
+  // The Verilog tops' ports: each name once, in the order of the first top that has
+  // it; a port that not every top has is present only for that top (parameter RTL_TOP).
+  std::vector<std::string> order;
+  std::map<std::string, std::vector<std::size_t>> owners;
+  std::map<std::string, VerilogPort> port_of;
+  for (std::size_t t = 0; t < facts.tops.size(); ++t)
+    for (const VerilogPort& p : facts.tops[t].ports) {
+      if (!owners.count(p.name)) {
+        order.push_back(p.name);
+        port_of[p.name] = p;
+      }
+      owners[p.name].push_back(t);
+    }
+  for (const std::string& name : order) {
+    std::vector<std::string> views;
+    std::string presence;
+    for (const std::size_t t : owners[name]) {
+      views.push_back(view_of_top(facts.tops[t]));
+      if (owners[name].size() < facts.tops.size())
+        presence += (presence.empty() ? "" : " || ") + std::string("RTL_TOP == ") + std::to_string(t);
+    }
+    write_wire_port(x, port_of[name], views, presence);
+  }
+  x.close("ports");
+}
+
+void write_file_sets(Xml& x, const ComponentFacts& facts) {
+  const std::string prefix = "../../../";  // from <prefix>/share/SpecularUnit/ip/
+  x.open("fileSets");
+  x.open("fileSet");
+  x.leaf("name", "systemc_headers");
+  x.leaf("description",
+         "The headers a SystemC platform includes, in the installed package (paths from "
+         "share/SpecularUnit/ip/); the folder holds the headers they include");
+  for (const char* header : {"specular/tlm/lt_target.h", "specular/tlm/pin_target.h",
+                             "specular/tlm/target.h", "specular/tlm/register_map.h",
+                             "specular/tlm/field_map.h", "specular/twin/rtl_target.h",
+                             "specular/twin/rtl_sync_target.h", "specular/core.h"}) {
+    x.open("file");
+    x.leaf("name", prefix + "include/" + header);
+    x.leaf("fileType", "systemCSource");
+    x.leaf("isIncludeFile", "true");
+    x.close("file");
+  }
+  x.leaf("dependency", prefix + "include");
+  x.close("fileSet");
+  x.open("fileSet");
+  x.leaf("name", "systemc_libraries");
+  x.leaf("description",
+         "The installed libraries (find_package(SpecularUnit) links them): core without "
+         "SystemC, the SystemC model and TLM targets, and (COMPONENTS rtl) the twin");
+  for (const char* lib : {"libspecular_core.a", "libspecular.a", "libspecular_twin.a",
+                          "libspecular_rtl_models.a"}) {
+    x.open("file");
+    x.leaf("name", prefix + facts.libdir + "/" + lib);
+    x.leaf("fileType", "swObjectLibrary");
+    x.close("file");
+  }
+  x.open("file");
+  x.leaf("name", prefix + facts.libdir + "/cmake/SpecularUnit/SpecularUnitConfig.cmake");
+  x.leaf("fileType", "user", "user=\"cmakePackageConfig\"");
+  x.leaf("description", "find_package(SpecularUnit CONFIG REQUIRED)");
+  x.close("file");
+  x.close("fileSet");
+  for (std::size_t t = 0; t < facts.tops.size(); ++t) {
+    x.open("fileSet");
+    x.leaf("name", "verilog_" + view_of_top(facts.tops[t]));
+    x.leaf("description",
+           facts.tops[t].name +
+               " and the modules it instantiates (installed in share/SpecularUnit/rtl/, as in "
+               "the source tree's rtl/); ROM images from specular_romgen (docs/rtl.md)");
+    for (const std::string& file : facts.top_files[t]) {
+      x.open("file");
+      x.leaf("name", "../rtl/" + file);
+      x.leaf("fileType", "verilogSource-2001");
+      x.close("file");
+    }
+    x.close("fileSet");
+  }
+  x.close("fileSets");
+}
+
+}  // namespace
+
+std::string ipxact_component(const ComponentFacts& facts) {
+  Xml x;
+  x.line("<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
+  x.line("<!-- Generated by specular_ip_export from modules/include/specular/tlm/register_map.h,");
+  x.line("     field_map.h and the Verilog tops' headers; edit those, not this file (docs/ipxact.md). -->");
+  x.open("component",
+         "xmlns:ipxact=\"http://www.accellera.org/XMLSchema/IPXACT/1685-2014\" "
+         "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+         "xsi:schemaLocation=\"http://www.accellera.org/XMLSchema/IPXACT/1685-2014 "
+         "http://www.accellera.org/XMLSchema/IPXACT/1685-2014/index.xsd\"");
+  x.leaf("vendor", "specular-unit");
+  x.leaf("library", "ip");
+  x.leaf("name", "specular_unit");
+  x.leaf("version", facts.version);
+  x.open("busInterfaces");
+  x.open("busInterface");
+  x.leaf("name", "socket");
+  x.leaf("description",
+         "The TLM-2.0 target socket: 32-bit generic payload, register map 'registers' "
+         "(docs/tlm.md); the bus type names TLM-2.0's generic payload (docs/ipxact.md)");
+  x.empty("busType", vlnv_attributes(bus_name));
+  x.open("abstractionTypes");
+  x.open("abstractionType");
+  for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
+  x.empty("abstractionRef", vlnv_attributes(abstraction_name));
+  x.open("portMaps");
+  x.open("portMap");
+  x.open("logicalPort");
+  x.leaf("name", "generic_payload");
+  x.close("logicalPort");
+  x.open("physicalPort");
+  x.leaf("name", "socket");
+  x.close("physicalPort");
+  x.close("portMap");
+  x.close("portMaps");
+  x.close("abstractionType");
+  x.close("abstractionTypes");
+  x.open("slave");
+  x.empty("memoryMapRef", "memoryMapRef=\"registers\"");
+  x.close("slave");
+  x.leaf("bitsInLau", "8");
+  x.close("busInterface");
+  x.close("busInterfaces");
+  write_memory_map(x);
+  x.open("model");
+  write_views(x, facts);
+  write_instantiations(x, facts);
+  write_ports(x, facts);
+  x.close("model");
+  write_file_sets(x, facts);
+  x.leaf("description",
+         "Specular colour intensity device of patent UA 59965 U: SystemC TLM-2.0 targets and "
+         "Verilog tops (README.md)");
+  x.open("parameters");
+  std::string tops;
+  for (std::size_t t = 0; t < facts.tops.size(); ++t)
+    tops += (t ? ", " : "") + std::to_string(t) + " " + facts.tops[t].name;
+  x.open("parameter", "parameterId=\"RTL_TOP\" resolve=\"user\" type=\"longint\"");
+  x.leaf("name", "RTL_TOP");
+  x.leaf("description", "Which Verilog top the pin ports belong to: " + tops +
+                            " (ports that not every top has carry isPresent on it)");
+  x.leaf("value", "0");
+  x.close("parameter");
+  x.close("parameters");
+  x.close("component");
+  return x.str();
+}
+
+namespace {
+void document_start(Xml& x, const std::string& root) {
+  x.line("<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
+  x.line("<!-- Generated by specular_ip_export; the bus type of specular_unit.xml's socket (docs/ipxact.md). -->");
+  x.open(root,
+         "xmlns:ipxact=\"http://www.accellera.org/XMLSchema/IPXACT/1685-2014\" "
+         "xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" "
+         "xsi:schemaLocation=\"http://www.accellera.org/XMLSchema/IPXACT/1685-2014 "
+         "http://www.accellera.org/XMLSchema/IPXACT/1685-2014/index.xsd\"");
+}
+}  // namespace
+
+std::string ipxact_bus_definition() {
+  Xml x;
+  document_start(x, "busDefinition");
+  x.leaf("vendor", vendor);
+  x.leaf("library", bus_library);
+  x.leaf("name", bus_name);
+  x.leaf("version", bus_version);
+  x.leaf("directConnection", "true");
+  x.leaf("isAddressable", "true");
+  x.leaf("maxMasters", "1");
+  x.leaf("maxSlaves", "1");
+  x.leaf("description",
+         "TLM-2.0 (IEEE 1666) generic payload through a tlm_initiator_socket / "
+         "tlm_target_socket pair, one initiator and one target per binding");
+  x.close("busDefinition");
+  return x.str();
+}
+
+std::string ipxact_abstraction_definition() {
+  Xml x;
+  document_start(x, "abstractionDefinition");
+  x.leaf("vendor", vendor);
+  x.leaf("library", bus_library);
+  x.leaf("name", abstraction_name);
+  x.leaf("version", bus_version);
+  x.empty("busType", vlnv_attributes(bus_name));
+  x.open("ports");
+  x.open("port");
+  x.leaf("logicalName", "generic_payload");
+  x.leaf("description", "b_transport / nb_transport / transport_dbg of tlm::tlm_generic_payload");
+  x.open("transactional");
+  for (const char* side : {"onMaster", "onSlave"}) {
+    x.open(side);
+    x.leaf("presence", "required");
+    x.leaf("initiative", std::string(side) == "onMaster" ? "requires" : "provides");
+    x.leaf("busWidth", "32");
+    x.close(side);
+  }
+  x.close("transactional");
+  x.close("port");
+  x.close("ports");
+  x.leaf("description", "The transaction-level abstraction of tlm2_generic_payload: one "
+                        "transactional port, 32 bits wide");
+  x.close("abstractionDefinition");
+  return x.str();
+}
+
+}  // namespace ip_export
+}  // namespace specular

@@ -1,0 +1,33 @@
+// The IEEE 1685-2014 (IP-XACT) component of the IP, written from the register map
+// (register_map.h, field_map.h) and the Verilog tops' headers (verilog_header.h).
+// docs/ipxact.md says what is described and how; ip/specular_unit.xml is its output.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "verilog_header.h"
+
+namespace specular {
+namespace ip_export {
+
+/// What the component says beyond the register map.
+struct ComponentFacts {
+  std::string version;                    ///< the package's version (the VLNV's)
+  std::string libdir = "lib";             ///< CMAKE_INSTALL_LIBDIR, relative to the prefix
+  std::vector<VerilogModule> tops;        ///< specular_device, specular_device_sync
+  std::vector<std::vector<std::string>> top_files;  ///< each top's Verilog files (names only)
+};
+
+std::string ipxact_component(const ComponentFacts& facts);
+
+/// The bus definition and the (TLM) abstraction definition the component's bus
+/// interface names: TLM-2.0's generic payload through a 32-bit socket.
+std::string ipxact_bus_definition();
+std::string ipxact_abstraction_definition();
+/// Their file names in ip/ (the component names them by VLNV only).
+constexpr const char* bus_definition_file = "tlm2_generic_payload.busdef.xml";
+constexpr const char* abstraction_definition_file = "tlm2_generic_payload.absdef.xml";
+
+}  // namespace ip_export
+}  // namespace specular

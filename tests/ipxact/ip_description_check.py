@@ -1,0 +1,420 @@
+#!/usr/bin/python3
+"""The IP's descriptions for SoC tools (ip/, docs/ipxact.md) against their sources.
+
+  ip_description_check.py ipxact  EXPORT SOURCE_DIR SCRATCH
+      ip/specular_unit.xml, read with lxml, against the C++ register map: every
+      register, register file, array and field (offset, width, access, reset,
+      enumerated values). Validated against IEEE 1685-2014's index.xsd when
+      SPECULAR_IPXACT_SCHEMA names it; otherwise well-formedness and the structure
+      walked here (the schema is not in the project: docs/ipxact.md, "Validating").
+  ip_description_check.py systemrdl EXPORT SOURCE_DIR SCRATCH
+      ip/specular_unit.rdl, read with systemrdl_subset (tokeniser + recursive
+      descent), against the same map.
+  ip_description_check.py rtl-ports EXPORT SOURCE_DIR SCRATCH YOSYS ROM_DIR
+      the component's Verilog ports, module parameters and file sets against Yosys's
+      reading of rtl/specular_device.v and rtl/specular_device_sync.v.
+  ip_description_check.py current EXPORT SOURCE_DIR SCRATCH
+      the committed ip/ files equal what specular_ip_export writes now.
+
+The C++ map comes from `specular_ip_export --json`: a dump of register_map and
+field_map (map_json.cpp) that shares no code with the XML and RDL writers; the
+expected IP-XACT and SystemRDL words for each C++ access are this file's own tables.
+Exit 0 pass, 1 a difference (each one listed), 2 bad use.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+NS = "http://www.accellera.org/XMLSchema/IPXACT/1685-2014"
+Q = "{%s}" % NS
+
+# C++ Access -> (IP-XACT access, modifiedWriteValue or None)
+IPXACT_ACCESS = {
+    "read_only": ("read-only", None),
+    "read_write": ("read-write", None),
+    "write_1_to_clear": ("read-write", "oneToClear"),
+    "self_clearing": ("read-write", "modify"),
+}
+# C++ Access -> SystemRDL properties that must hold
+RDL_ACCESS = {
+    "read_only": {"sw": "r", "hw": "w"},  # the device writes it
+    "read_write": {"sw": "rw", "hw": "r"},  # storage the device reads
+    "write_1_to_clear": {"sw": "rw", "hw": "r", "onwrite": "woclr", "hwset": True},
+    "self_clearing": {"sw": "w", "hw": "r", "singlepulse": True},
+}
+RDL_WRITE_EFFECTS = ("onwrite", "singlepulse", "onread", "hwset", "hwclr", "woclr", "woset")
+
+
+class Failures:
+    def check(self, ok, what):
+        if not ok:
+            self.items.append(what)
+
+    def __init__(self, truth="the C++ map"):
+        self.items = []
+        self.truth = truth
+
+    def equal(self, got, want, what):
+        self.check(got == want, f"{what}: {got!r}, {self.truth} says {want!r}")
+
+    def finish(self, name):
+        if self.items:
+            for item in self.items:
+                print(f"{name}: FAIL: {item}")
+            print(f"{name}: {len(self.items)} difference(s)")
+            return 1
+        print(f"{name}: PASS")
+        return 0
+
+
+def cpp_map(export, scratch):
+    path = os.path.join(scratch, "map.json")
+    subprocess.run([export, "--json", path], check=True)
+    with open(path, encoding="utf-8") as f:
+        return json.load(f)
+
+
+def sv_number(text):
+    """An IP-XACT 2014 constant expression as written: decimal or 'hXX / 32'hXX."""
+    t = text.strip().replace("_", "")
+    m = re.fullmatch(r"(\d*)'([hHdDbBoO])([0-9a-fA-F]+)", t)
+    if m:
+        return int(m.group(3), {"h": 16, "d": 10, "b": 2, "o": 8}[m.group(2).lower()])
+    return int(t, 10)
+
+
+def field_reset(word, f):
+    return (word >> f["shift"]) & ((1 << f["width"]) - 1)
+
+
+# ---- IP-XACT -------------------------------------------------------------------------
+
+
+def text_of(element, tag):
+    child = element.find(Q + tag)
+    return None if child is None else child.text
+
+
+def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word):
+    fields = xml_register.findall(Q + "field")
+    fail.equal([text_of(f, "name") for f in fields], [f["name"] for f in cpp_fields],
+               f"{where}: fields")
+    for xf, cf in zip(fields, cpp_fields):
+        at = f"{where}.{cf['name']}"
+        fail.equal(sv_number(text_of(xf, "bitOffset")), cf["shift"], f"{at} bitOffset")
+        fail.equal(sv_number(text_of(xf, "bitWidth")), cf["width"], f"{at} bitWidth")
+        resets = xf.findall(f"{Q}resets/{Q}reset/{Q}value")
+        fail.equal([sv_number(r.text) for r in resets], [field_reset(reset_word, cf)], f"{at} reset")
+        access, mwv = IPXACT_ACCESS[cf["access"]]
+        fail.equal(text_of(xf, "access"), access, f"{at} access")
+        fail.equal(text_of(xf, "modifiedWriteValue"), mwv, f"{at} modifiedWriteValue")
+        values = [(text_of(v, "name"), sv_number(text_of(v, "value")))
+                  for v in xf.findall(f"{Q}enumeratedValues/{Q}enumeratedValue")]
+        fail.equal(values, [(v["name"], v["value"]) for v in cf["values"]], f"{at} enumeratedValues")
+
+
+BUS_FILES = ("tlm2_generic_payload.busdef.xml", "tlm2_generic_payload.absdef.xml")
+
+
+def vlnv_of(root):
+    return tuple(text_of(root, t) for t in ("vendor", "library", "name", "version"))
+
+
+def vlnv_ref(element):
+    return tuple(element.get(a) for a in ("vendor", "library", "name", "version"))
+
+
+def check_bus_interface(fail, root, bus_trees):
+    """The socket's bus type and abstraction resolve to the definitions in ip/, and its
+    port map joins a logical port of the abstraction to a port of the model."""
+    bus_def = bus_trees[BUS_FILES[0]].getroot()
+    abs_def = bus_trees[BUS_FILES[1]].getroot()
+    fail.equal(bus_def.tag, Q + "busDefinition", BUS_FILES[0])
+    fail.equal(abs_def.tag, Q + "abstractionDefinition", BUS_FILES[1])
+    def same(got, want, what):
+        fail.check(got == want, f"{what}: {got!r}, the definition in ip/ is {want!r}")
+    same(vlnv_ref(abs_def.find(Q + "busType")), vlnv_of(bus_def), "the abstraction's busType")
+    interfaces = root.findall(f"{Q}busInterfaces/{Q}busInterface")
+    fail.equal(len(interfaces), 1, "bus interfaces")
+    for bi in interfaces:
+        same(vlnv_ref(bi.find(Q + "busType")), vlnv_of(bus_def), "busType")
+        refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
+        same([vlnv_ref(r) for r in refs], [vlnv_of(abs_def)], "abstractionRef")
+        logical = {text_of(p, "logicalName") for p in abs_def.findall(f"{Q}ports/{Q}port")}
+        physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
+        for pm in bi.iter(Q + "portMap"):
+            lp = pm.find(f"{Q}logicalPort/{Q}name").text
+            pp = pm.find(f"{Q}physicalPort/{Q}name").text
+            fail.check(lp in logical, f"portMap: no logical port {lp} in {BUS_FILES[1]}")
+            fail.check(pp in physical, f"portMap: no port {pp} in the model")
+
+
+def check_ipxact(export, source, scratch):
+    from lxml import etree
+    fail = Failures()
+    cpp = cpp_map(export, scratch)
+    path = os.path.join(source, "ip", "specular_unit.xml")
+    tree = etree.parse(path)  # raises on a file that is not well-formed
+    bus_trees = {name: etree.parse(os.path.join(source, "ip", name)) for name in BUS_FILES}
+    schema = os.environ.get("SPECULAR_IPXACT_SCHEMA", "")
+    if schema:
+        xsd = etree.XMLSchema(etree.parse(schema))
+        for name, t in [("specular_unit.xml", tree)] + list(bus_trees.items()):
+            ok = xsd.validate(t)
+            fail.check(ok, f"{name} not valid against {schema}: " +
+                       "; ".join(str(e) for e in list(xsd.error_log)[:5]))
+            print(f"ipxact: {name} validated against {schema}: {'valid' if ok else 'INVALID'}")
+    else:
+        print("ipxact: SPECULAR_IPXACT_SCHEMA not set: well-formedness and structure only")
+    root = tree.getroot()
+    check_bus_interface(fail, root, bus_trees)
+    fail.equal(root.tag, Q + "component", "root element")
+    for tag in ("vendor", "library", "name", "version"):
+        fail.check(bool(text_of(root, tag)), f"VLNV: no {tag}")
+    by_name = {r["name"]: r for r in cpp["registers"]}
+    maps = root.findall(f"{Q}memoryMaps/{Q}memoryMap")
+    fail.equal(len(maps), 1, "memory maps")
+    blocks = maps[0].findall(Q + "addressBlock") if maps else []
+    fail.equal(len(blocks), 1, "address blocks")
+    if not blocks:
+        return fail.finish("ipxact")
+    block = blocks[0]
+    fail.equal(sv_number(text_of(block, "baseAddress")), 0, "baseAddress")
+    fail.equal(sv_number(text_of(block, "range")), cpp["map_size"], "range")
+    fail.equal(sv_number(text_of(block, "width")), 32, "width")
+    # the bus interface names this memory map
+    refs = root.findall(f"{Q}busInterfaces/{Q}busInterface/{Q}slave/{Q}memoryMapRef")
+    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(maps[0], "name")], "slave memoryMapRef")
+    entries = [e for e in block if e.tag in (Q + "register", Q + "registerFile")]
+    fail.equal([text_of(e, "name") for e in entries], [r["name"] for r in cpp["registers"]],
+               "registers, register files and arrays in order")
+    for xe, row in zip(entries, cpp["registers"]):
+        name = row["name"]
+        fail.equal(sv_number(text_of(xe, "addressOffset")), row["offset"], f"{name} addressOffset")
+        if "aliases" in row:
+            fail.equal(xe.tag, Q + "registerFile", f"{name}: an alias window is a registerFile")
+            fail.equal(sv_number(text_of(xe, "range") or "0"), 4 * row["words"], f"{name} range")
+            inner = xe.findall(Q + "register")
+            fail.equal([text_of(r, "name") for r in inner], row["aliases"], f"{name} registers")
+            for w, (xr, alias) in enumerate(zip(inner, row["aliases"])):
+                fail.equal(sv_number(text_of(xr, "addressOffset")), 4 * w, f"{name}.{alias} addressOffset")
+                fail.equal(sv_number(text_of(xr, "size")), 32, f"{name}.{alias} size")
+                check_ipxact_fields(fail, f"{name}.{alias}", xr, by_name[alias]["fields"],
+                                    row["reset_of_word"][w])
+        else:
+            fail.equal(xe.tag, Q + "register", f"{name}: a register")
+            dims = [sv_number(d.text) for d in xe.findall(Q + "dim")]
+            fail.equal(dims, [] if row["words"] == 1 else [row["words"]], f"{name} dim")
+            fail.equal(sv_number(text_of(xe, "size")), 32, f"{name} size")
+            fail.check(len(set(row["reset_of_word"])) == 1,
+                       f"{name}: words with different resets cannot be one register array")
+            check_ipxact_fields(fail, name, xe, row["fields"], row["reset_of_word"][0])
+    return fail.finish("ipxact")
+
+
+# ---- SystemRDL -----------------------------------------------------------------------
+
+
+def rdl_identifier(name):
+    return name.replace("-", "_")
+
+
+def check_rdl_fields(fail, where, comp, cpp_fields, reset_word, enums):
+    fields = [(c, i) for c, i in comp.children if c.kind == "field"]
+    fail.equal([i.name for _, i in fields], [f["name"] for f in cpp_fields], f"{where}: fields")
+    for (fc, fi), cf in zip(fields, cpp_fields):
+        at = f"{where}.{cf['name']}"
+        msb, lsb = fi.dims if fi.dims and len(fi.dims) == 2 else (None, None)
+        fail.equal(lsb, cf["shift"], f"{at} lsb")
+        fail.equal(None if msb is None else msb - lsb + 1, cf["width"], f"{at} width")
+        fail.equal(fi.reset, field_reset(reset_word, cf), f"{at} reset")
+        want = RDL_ACCESS[cf["access"]]
+        got = {k: fc.properties.get(k) for k in want}
+        fail.equal(got, want, f"{at} access")
+        extra = [k for k in RDL_WRITE_EFFECTS if k in fc.properties and k not in want]
+        fail.check(not extra, f"{at}: side effects {extra} the C++ map does not have")
+        encode = fc.properties.get("encode")
+        if cf["values"]:
+            entries = enums[encode].entries if encode in enums else []
+            fail.equal([(e[0], e[1]) for e in entries],
+                       [(rdl_identifier(v["name"]), v["value"]) for v in cf["values"]], f"{at} encode")
+        else:
+            fail.equal(encode, None, f"{at} encode")
+
+
+def check_systemrdl(export, source, scratch):
+    import systemrdl_subset
+    fail = Failures()
+    cpp = cpp_map(export, scratch)
+    with open(os.path.join(source, "ip", "specular_unit.rdl"), encoding="utf-8") as f:
+        rdl = systemrdl_subset.parse(f.read())
+    top = rdl.addrmaps.get("specular_unit")
+    fail.check(top is not None, "no addrmap specular_unit")
+    if top is None:
+        return fail.finish("systemrdl")
+    fail.equal(top.defaults.get("regwidth"), 32, "default regwidth")
+    by_name = {r["name"]: r for r in cpp["registers"]}
+    children = top.children
+    fail.equal([i.name for _, i in children], [r["name"] for r in cpp["registers"]],
+               "registers, regfiles and arrays in order")
+    for (comp, inst), row in zip(children, cpp["registers"]):
+        name = row["name"]
+        fail.equal(inst.address, row["offset"], f"{name} address")
+        if "aliases" in row:
+            fail.equal(comp.kind, "regfile", f"{name}: an alias window is a regfile")
+            regs = comp.children
+            fail.equal([i.name for _, i in regs], row["aliases"], f"{name} registers")
+            for w, ((rc, ri), alias) in enumerate(zip(regs, row["aliases"])):
+                fail.equal(rc.kind, "reg", f"{name}.{alias} kind")
+                fail.equal(ri.address, 4 * w, f"{name}.{alias} address")
+                check_rdl_fields(fail, f"{name}.{alias}", rc, by_name[alias]["fields"],
+                                 row["reset_of_word"][w], rdl.enums)
+        else:
+            fail.equal(comp.kind, "reg", f"{name}: a reg")
+            fail.equal(inst.dims, None if row["words"] == 1 else (row["words"],), f"{name} array")
+            if row["words"] > 1:
+                fail.equal(inst.stride, 4, f"{name} stride")
+            fail.check(len(set(row["reset_of_word"])) == 1,
+                       f"{name}: words with different resets cannot be one register array")
+            check_rdl_fields(fail, name, comp, row["fields"], row["reset_of_word"][0], rdl.enums)
+    # the last register ends inside the map
+    last = cpp["registers"][-1]
+    fail.check(last["offset"] + 4 * last["words"] <= cpp["map_size"], "map size")
+    return fail.finish("systemrdl")
+
+
+# ---- the Verilog tops ----------------------------------------------------------------
+
+TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync"}
+
+
+def yosys_json(yosys, rom_dir, script, out):
+    subprocess.run([yosys, "-q", "-p", script + f"; write_json {out}"], cwd=rom_dir, check=True,
+                   stdout=subprocess.DEVNULL)
+    with open(out, encoding="utf-8") as f:
+        return json.load(f)["modules"]
+
+
+def yosys_parameter(text):
+    """Yosys writes integers as bit strings and strings as themselves."""
+    if text and set(text) <= {"0", "1"}:
+        return int(text, 2), len(text)
+    return text, None
+
+
+def check_rtl_ports(export, source, scratch, yosys, rom_dir):
+    from lxml import etree
+    fail = Failures("Yosys")
+    root = etree.parse(os.path.join(source, "ip", "specular_unit.xml")).getroot()
+    model = root.find(Q + "model")
+    xml_ports = {text_of(p, "name"): p for p in model.findall(f"{Q}ports/{Q}port")}
+    instantiations = {text_of(i, "name"): i
+                      for i in model.findall(f"{Q}instantiations/{Q}componentInstantiation")}
+    file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
+    rtl = os.path.join(source, "rtl")
+    sources = sorted(os.path.join(rtl, f) for f in os.listdir(rtl) if f.endswith(".v"))
+    parameter_of = {p.get("parameterId"): p for p in root.iter(Q + "parameter", Q + "moduleParameter")}
+    for index, (top, view) in enumerate(TOPS.items()):
+        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{top}.v",
+                             os.path.join(scratch, f"{top}.json"))
+        ports = modules[top]["ports"]
+        # every Verilog port, in order, with its direction, width and signedness
+        in_view = [name for name, p in xml_ports.items()
+                   if view in [v.text for v in p.iter(Q + "viewRef")]]
+        # (IP-XACT's port order has no meaning; the component lists each name once)
+        fail.equal(sorted(in_view), sorted(ports), f"{top}: the ports of view {view}")
+        for name, yp in ports.items():
+            xp = xml_ports.get(name)
+            if xp is None:
+                continue
+            wire = xp.find(Q + "wire")
+            fail.equal(text_of(wire, "direction"), {"input": "in", "output": "out"}[yp["direction"]],
+                       f"{top}.{name} direction")
+            vector = wire.find(f"{Q}vectors/{Q}vector")
+            width = 1 if vector is None else \
+                abs(sv_number(text_of(vector, "left")) - sv_number(text_of(vector, "right"))) + 1
+            fail.equal(width, len(yp["bits"]), f"{top}.{name} width")
+            type_names = [t.text for t in wire.iter(Q + "typeName")]
+            fail.equal(type_names, ["wire signed" if yp.get("signed") else "wire"], f"{top}.{name} type")
+            presence = text_of(xp, "isPresent")
+            if presence is not None:  # a port of some tops only: RTL_TOP == its index
+                fail.check(f"RTL_TOP == {index}" in presence, f"{top}.{name}: isPresent {presence!r}")
+        # the module parameters, in order, with their defaults
+        inst = instantiations.get(view)
+        fail.check(inst is not None, f"no componentInstantiation {view}")
+        if inst is None:
+            continue
+        fail.equal(text_of(inst, "moduleName"), top, f"{view} moduleName")
+        xml_params = [(text_of(p, "name"), text_of(p, "value"), p)
+                      for p in inst.findall(f"{Q}moduleParameters/{Q}moduleParameter")]
+        defaults = modules[top]["parameter_default_values"]
+        fail.equal(sorted(n for n, _, _ in xml_params), sorted(defaults), f"{top} parameters")
+        for name, value, element in xml_params:
+            want, bits = yosys_parameter(defaults.get(name, ""))
+            got = value[1:-1] if isinstance(want, str) else sv_number(value)
+            fail.equal(got, want, f"{top} parameter {name}")
+            vector = element.find(f"{Q}vectors/{Q}vector")
+            if bits is not None and bits != 32:  # a sized parameter
+                fail.check(vector is not None and sv_number(text_of(vector, "left")) == bits - 1,
+                           f"{top} parameter {name}: [{bits - 1}:0] expected")
+        # the file set: the files of the modules Yosys elaborates under this top
+        hierarchy = yosys_json(yosys, rom_dir,
+                               f"read_verilog -defer {' '.join(sources)}; hierarchy -top {top}; proc",
+                               os.path.join(scratch, f"{top}_hierarchy.json"))
+        files = sorted({os.path.basename(m["attributes"]["src"].split(":")[0])
+                        for m in hierarchy.values()})
+        file_set = file_sets.get(f"verilog_{view}")
+        listed = [] if file_set is None else \
+            [os.path.basename(text_of(f, "name")) for f in file_set.findall(Q + "file")]
+        fail.equal(sorted(listed), files, f"file set verilog_{view}")
+        for f in ([] if file_set is None else file_set.findall(Q + "file")):
+            rel = text_of(f, "name")  # relative to ip/, as installed beside share/SpecularUnit/rtl
+            fail.check(os.path.isfile(os.path.join(source, "ip", rel)), f"{rel}: no such file")
+    fail.check("RTL_TOP" in parameter_of, "no component parameter RTL_TOP")
+    # the SystemC headers listed are headers of the package
+    headers = file_sets.get("systemc_headers")
+    for f in ([] if headers is None else headers.findall(Q + "file")):
+        rel = text_of(f, "name").split("include/", 1)[1]
+        fail.check(any(os.path.isfile(os.path.join(source, base, rel))
+                       for base in ("modules/include", "twin/include")), f"{rel}: no such header")
+    return fail.finish("rtl-ports")
+
+
+def check_current(export, source, scratch):
+    fail = Failures()
+    fresh = {"specular_unit.xml": "--ipxact", "specular_unit.rdl": "--systemrdl"}
+    args = [export, "--source-dir", source, "--bus-dir", scratch]
+    for name, option in fresh.items():
+        args += [option, os.path.join(scratch, name)]
+    subprocess.run(args, check=True)
+    for name in list(fresh) + list(BUS_FILES):
+        with open(os.path.join(scratch, name), "rb") as f:
+            now = f.read()
+        committed_path = os.path.join(source, "ip", name)
+        committed = open(committed_path, "rb").read() if os.path.exists(committed_path) else b""
+        fail.check(now == committed,
+                   f"ip/{name} differs from what specular_ip_export writes now; run "
+                   f"specular_ip_export --source-dir . --ipxact ip/specular_unit.xml "
+                   f"--systemrdl ip/specular_unit.rdl --bus-dir ip")
+    return fail.finish("current")
+
+
+def main(argv):
+    commands = {"ipxact": (check_ipxact, 3), "systemrdl": (check_systemrdl, 3),
+                "rtl-ports": (check_rtl_ports, 5), "current": (check_current, 3)}
+    if len(argv) < 2 or argv[1] not in commands or len(argv) - 2 != commands[argv[1]][1]:
+        print(__doc__, file=sys.stderr)
+        return 2
+    function, _ = commands[argv[1]]
+    args = [os.path.abspath(a) if i in (1, 2) else a for i, a in enumerate(argv[2:])]
+    os.makedirs(args[2], exist_ok=True)
+    return function(*args)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

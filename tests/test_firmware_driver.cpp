@@ -57,13 +57,13 @@ std::string kind_name(const testing::TestParamInfo<Kind>& info) {
   return "unknown";
 }
 
-std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind) {
+std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind, const Config& config) {
   switch (kind) {
-    case Kind::lt: return std::make_unique<SpecularLtTarget>(name, Config{}, period);
+    case Kind::lt: return std::make_unique<SpecularLtTarget>(name, config, period);
     case Kind::pin:
-      return std::make_unique<SpecularPinTarget>(name, Config{}, period, false, PinDelay::keep);
-    case Kind::rtl: return std::make_unique<SpecularRtlTarget>(name, Config{}, period);
-    case Kind::rtl_sync: return std::make_unique<SpecularRtlSyncTarget>(name, Config{}, period);
+      return std::make_unique<SpecularPinTarget>(name, config, period, false, PinDelay::keep);
+    case Kind::rtl: return std::make_unique<SpecularRtlTarget>(name, config, period);
+    case Kind::rtl_sync: return std::make_unique<SpecularRtlSyncTarget>(name, config, period);
   }
   return nullptr;
 }
@@ -160,8 +160,9 @@ struct FirmwareCpu : sc_core::sc_module {
 struct FirmwareTop : sc_core::sc_module {
   FirmwareCpu cpu;
   std::unique_ptr<SpecularTarget> target;
-  FirmwareTop(sc_core::sc_module_name name, Kind kind, std::function<void(FirmwareCpu&)> program)
-      : sc_module(name), cpu("cpu", std::move(program)), target(make_target("ip", kind)) {
+  FirmwareTop(sc_core::sc_module_name name, Kind kind, const Config& config,
+              std::function<void(FirmwareCpu&)> program)
+      : sc_module(name), cpu("cpu", std::move(program)), target(make_target("ip", kind, config)) {
     cpu.socket.bind(target->socket);
     // The interrupt hook: what a platform's interrupt controller would call.
     target->on_done_irq([this](bool level) {
@@ -173,9 +174,10 @@ struct FirmwareTop : sc_core::sc_module {
   }
 };
 
-FirmwareTop& elaborate_and_run(Kind kind, std::function<void(FirmwareCpu&)> program) {
+FirmwareTop& elaborate_and_run(Kind kind, std::function<void(FirmwareCpu&)> program,
+                               const Config& config = Config{}) {
   static std::unique_ptr<FirmwareTop> top;  // alive until exit, as SystemC wants
-  top = std::make_unique<FirmwareTop>("top", kind, std::move(program));
+  top = std::make_unique<FirmwareTop>("top", kind, config, std::move(program));
   sc_core::sc_start();
   return *top;
 }
@@ -337,6 +339,56 @@ TEST_P(FirmwareDriver, RefusedAccessesComeBackAsErrorCodesWithTheirCause) {
   EXPECT_EQ(wait_status, SPECULAR_ERR_REFUSED);
   EXPECT_EQ(wait_cause, static_cast<std::uint32_t>(ErrorCause::cos_out_of_range));
   EXPECT_EQ(top.cpu.refused, std::size(cases) + 1);
+}
+
+// Under the `literal` policy adder 8 keeps negative values: pins 24-26 and register 9
+// after pass 2 go negative, which the driver must sign-extend (S18.13 in a 32-bit word,
+// S14.22 in two). Low cos with large n makes A < 0 (spec §1: x < -3).
+TEST_P(FirmwareDriver, NegativeResultsUnderLiteralSaturationKeepTheirSign) {
+  Config literal;
+  literal.saturation = Saturation::literal;
+  Tally tally;
+  std::size_t negative_out = 0, negative_reg9 = 0;
+  FirmwareTop& top = elaborate_and_run(
+      GetParam(),
+      [&](FirmwareCpu& cpu) {
+        const Core core(literal);
+        std::mt19937 random(35);
+        bind(cpu, true, SPECULAR_WAIT_POLL);
+        for (int i = 0; i < 300; ++i) {
+          const specular_operands in{static_cast<std::uint32_t>(random() % 60000),
+                                     1u + static_cast<std::uint32_t>(random() % 1000),
+                                     {static_cast<std::uint32_t>(random() % 256), 255u, 1u}};
+          specular_result out{};
+          ASSERT_EQ(specular_compute(&cpu.dev, &in, &out), SPECULAR_OK);
+          const Result expected = core.run({in.cos, in.n, {in.rgb[0], in.rgb[1], in.rgb[2]}});
+          bool equal = out.reg9_pass1 == expected.reg9_pass1 && out.reg9_pass2 == expected.reg9_pass2;
+          for (int ch = 0; ch < 3; ++ch) equal = equal && out.out[ch] == expected.out[ch];
+          tally.expect(equal, "literal: cos " + std::to_string(in.cos) + " n " + std::to_string(in.n) +
+                                  ": reg9 " + std::to_string(out.reg9_pass2) + " vs Core " +
+                                  std::to_string(expected.reg9_pass2) + ", out " +
+                                  std::to_string(out.out[1]) + " vs " + std::to_string(expected.out[1]));
+          negative_out += out.out[1] < 0;
+          negative_reg9 += out.reg9_pass2 < 0;
+        }
+        const std::uint32_t rgb[3] = {255u, 128u, 7u};
+        std::vector<std::uint32_t> cos(300);
+        for (auto& c : cos) c = static_cast<std::uint32_t>(random() % 30000);
+        std::vector<std::int32_t> out(3 * cos.size());
+        ASSERT_EQ(specular_shade(&cpu.dev, 900, rgb, cos.data(), cos.size(), out.data()), SPECULAR_OK);
+        for (std::size_t i = 0; i < cos.size(); ++i) {
+          const Result expected = core.run({cos[i], 900, {rgb[0], rgb[1], rgb[2]}});
+          bool equal = true;
+          for (int ch = 0; ch < 3; ++ch) equal = equal && out[3 * i + ch] == expected.out[ch];
+          tally.expect(equal, "literal batch, cos " + std::to_string(cos[i]));
+          negative_out += out[3 * i] < 0;
+        }
+      },
+      literal);
+  EXPECT_TRUE(top.cpu.finished);
+  EXPECT_EQ(tally.mismatches, 0u) << "of " << tally.operations;
+  EXPECT_GT(negative_out, 100u) << "too few negative pins: the sign path is not exercised";
+  EXPECT_GT(negative_reg9, 100u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareDriver,

@@ -43,7 +43,6 @@ int specular_init(specular_dev* dev, uintptr_t base, const specular_bus* bus) {
   dev->bus.write_block = NULL;
   dev->bus.idle = NULL;
   dev->bus.context = NULL;
-  dev->has_bus = bus != NULL;
   if (bus != NULL) dev->bus = *bus;
   dev->wait_mode = SPECULAR_WAIT_POLL;
   dev->poll_limit = SPECULAR_DEFAULT_POLL_LIMIT;

@@ -71,8 +71,7 @@ typedef enum specular_wait_mode {
 /* One device. Fill it with specular_init; the fields are readable by the caller. */
 typedef struct specular_dev {
   uintptr_t base;           /* the IP's base address (its window: SPECULAR_MAP_SIZE bytes) */
-  specular_bus bus;         /* all NULL: volatile accesses */
-  int has_bus;              /* bus given to specular_init */
+  specular_bus bus;         /* read32/write32 NULL: volatile accesses */
   specular_wait_mode wait_mode;
   uint32_t poll_limit;      /* STATUS reads (or idle calls) before SPECULAR_ERR_TIMEOUT; 0 = no limit */
   uint32_t cos_max;         /* from CONFIG at init: 1 << COS_FRAC_BITS */

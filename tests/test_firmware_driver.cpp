@@ -402,11 +402,13 @@ struct FakeIp {
       {SPECULAR_VERSION_OFFSET, map_version},
       {SPECULAR_CONFIG_OFFSET, config_word(Config{})}};
   std::vector<std::uint32_t> writes;  ///< offsets written, in order
+  std::vector<std::uint32_t> values;  ///< ... and the values
   static std::uint32_t read32(void* context, std::uintptr_t address) {
     return static_cast<FakeIp*>(context)->regs[static_cast<std::uint32_t>(address - ip_base)];
   }
-  static void write32(void* context, std::uintptr_t address, std::uint32_t) {
+  static void write32(void* context, std::uintptr_t address, std::uint32_t value) {
     static_cast<FakeIp*>(context)->writes.push_back(static_cast<std::uint32_t>(address - ip_base));
+    static_cast<FakeIp*>(context)->values.push_back(value);
   }
   specular_bus bus() {
     specular_bus b{};
@@ -492,6 +494,30 @@ TEST(FirmwareDriverArguments, TheRangesComeFromConfig) {
   const specular_operands too_wide{4097, 1, {63, 0, 0}};
   EXPECT_EQ(specular_compute(&dev, &too_wide, nullptr), SPECULAR_ERR_COS);
   EXPECT_TRUE(ip.writes.empty());
+}
+
+// The two interrupt hooks: notify only sets the flag (no bus access: a simulator's
+// callback may not make one); the handler, for an ISR on the level, also acknowledges
+// with the one write that makes the level fall (W1C of STATUS.DONE).
+TEST(FirmwareDriverArguments, TheIrqHandlerAcknowledgesAndNotifyOnlySetsTheFlag) {
+  FakeIp ip;
+  const specular_bus bus = ip.bus();
+  specular_dev dev;
+  ASSERT_EQ(specular_init(&dev, ip_base, &bus), SPECULAR_OK);
+  ip.writes.clear();
+  ip.values.clear();
+  EXPECT_EQ(dev.irq_pending, 0u);
+  specular_irq_notify(&dev);
+  EXPECT_EQ(dev.irq_pending, 1u);
+  EXPECT_TRUE(ip.writes.empty());
+  dev.irq_pending = 0u;
+  specular_irq_handler(&dev);
+  EXPECT_EQ(dev.irq_pending, 1u);
+  ASSERT_EQ(ip.writes.size(), 1u);
+  EXPECT_EQ(ip.writes[0], offset_of(Reg::status));
+  EXPECT_EQ(ip.values[0], status_bits::done);
+  specular_irq_notify(nullptr);  // no crash
+  specular_irq_handler(nullptr);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ if named=$( (grep -rlF --include='*.cmake' -e "$build/" -e "$work/install_first"
 fi
 (cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
 echo "   ... $(wc -l <"$work/files.txt") files"
-unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/[a-z0-9_]+\.(v|hex)))$' \
+unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit(Firmware)?/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/[a-z0-9_]+\.(v|hex)|firmware/specular_driver\.c))$' \
              "$work/files.txt" || true)
 if [[ -n "$unexpected" ]]; then
   echo "consumer_check: FAIL: the install holds more than the IP:" >&2

@@ -45,6 +45,12 @@ PACKAGES=(
   nlohmann-json3-dev
   slurm-wlm munge jq
   python3-lxml  # tests/ipxact: reads the IP-XACT component back with an XML library (docs/ipxact.md)
+  # The firmware header and C driver (firmware/, tests/firmware/): cross-compiled in ctest
+  # for rv32imac/ilp32 (with picolibc) and Cortex-M4 (with newlib's headers), and with
+  # clang as a second host C compiler.
+  gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf
+  gcc-arm-none-eabi libnewlib-arm-none-eabi
+  clang
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

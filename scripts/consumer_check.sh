@@ -168,7 +168,7 @@ fi
 PKG_CONFIG_LIBDIR="$work/no_systemc" PKG_CONFIG_PATH= SystemCLanguage_DIR= \
   cmake -S "$root/examples/consumer" -B "$work/core_only" -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_PREFIX_PATH="$work/prefix" -DSPECULAR_CONSUMER_CORE_ONLY=ON \
-        -DCMAKE_DISABLE_FIND_PACKAGE_SystemCLanguage=ON >"$work/configure_core.log"
+        -DCMAKE_DISABLE_FIND_PACKAGE_SystemCLanguage=ON --no-warn-unused-cli >"$work/configure_core.log"
 cmake --build "$work/core_only" -j "$jobs" >"$work/build_core.log"
 "$work/core_only/consumer_core" | tail -1
 

@@ -44,6 +44,7 @@ PACKAGES=(
   qflow-tech-osu018 opensta bc
   nlohmann-json3-dev
   slurm-wlm munge jq
+  zlib1g-dev  # the twin's FST writer (Verilator --trace-fst) links zlib; the package's find_dependency(ZLIB) (issue 35)
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

@@ -368,7 +368,7 @@ case "$command" in
   task) (($# == 3)) || die "usage: farm.sh task DIR ID"; run_task "$2" "$3" ;;
   merge) (($# == 2)) || die "usage: farm.sh merge DIR"; run_merge "$2" ;;
   wait) (($# == 2)) || die "usage: farm.sh wait DIR"; wait_for "$(cd "$2" && pwd)" ;;
-  list) (($# == 2 || $# == 4)) || die "usage: farm.sh list REGRESSION [--build DIR]"
+  list) (($# >= 2)) || die "usage: farm.sh list REGRESSION [--build DIR]"
         regression=$2; shift 2; parse_options "$@"; regression_tasks "$regression" ;;
   -h|--help|"") sed -n '2,27p' "$script" | sed 's/^# \{0,1\}//' ;;
   *) die "unknown command '$command' (allowed: submit, resubmit, wait, task, merge, list)" ;;

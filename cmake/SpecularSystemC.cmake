@@ -189,14 +189,113 @@ macro(_specular_systemc_cmake_package)
   endif()
 endmacro()
 
+# ---- a second SystemC beside the package's (issue 35) ---------------------------------
+# A program that links the package's SystemC and another one (say its own pkg-config
+# systemc, Debian's 2.3.4, beside a package built on 3.0.2) links, then crashes in
+# SystemC's static initialisers. When the project's top-level CMakeLists.txt has been
+# read, every target that links SpecularUnit::specular is checked for a SystemC library
+# file other than the package's (a target such as PkgConfig::X, or a path); one is a
+# configure error naming the target and both files. (A bare `-lsystemc` is not resolved.)
+
+# The library files `item` (a target or a path) brings, through its link items.
+function(_specular_systemc_link_files item depth out)
+  set(files "")
+  string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" item "${item}")
+  if(depth GREATER 8 OR item MATCHES "\\$<")
+  elseif(TARGET "${item}")
+    get_target_property(aliased "${item}" ALIASED_TARGET)
+    if(aliased)
+      set(item "${aliased}")
+    endif()
+    get_target_property(type "${item}" TYPE)
+    get_target_property(imported "${item}" IMPORTED)
+    if(imported AND NOT type STREQUAL "INTERFACE_LIBRARY")
+      get_target_property(location "${item}" LOCATION)
+      if(location)
+        list(APPEND files "${location}")
+      endif()
+    endif()
+    set(links "")
+    foreach(property LINK_LIBRARIES INTERFACE_LINK_LIBRARIES)
+      if(NOT (property STREQUAL "LINK_LIBRARIES" AND (imported OR type STREQUAL "INTERFACE_LIBRARY")))
+        get_target_property(more "${item}" ${property})
+        if(more)
+          list(APPEND links ${more})
+        endif()
+      endif()
+    endforeach()
+    math(EXPR next "${depth} + 1")
+    foreach(link IN LISTS links)
+      _specular_systemc_link_files("${link}" ${next} more)
+      list(APPEND files ${more})
+    endforeach()
+  elseif(IS_ABSOLUTE "${item}")
+    list(APPEND files "${item}")
+  endif()
+  set(${out} "${files}" PARENT_SCOPE)
+endfunction()
+
+function(_specular_systemc_check_mix ours)
+  get_filename_component(ours_real "${ours}" REALPATH)
+  set(folders "${CMAKE_SOURCE_DIR}")
+  while(folders)
+    list(POP_FRONT folders folder)
+    get_property(subfolders DIRECTORY "${folder}" PROPERTY SUBDIRECTORIES)
+    list(APPEND folders ${subfolders})
+    get_property(targets DIRECTORY "${folder}" PROPERTY BUILDSYSTEM_TARGETS)
+    foreach(target IN LISTS targets)
+      get_target_property(type ${target} TYPE)
+      if(NOT type MATCHES "^(EXECUTABLE|SHARED_LIBRARY|MODULE_LIBRARY)$")
+        continue()
+      endif()
+      _specular_systemc_link_files(${target} 0 files)
+      set(has_ours FALSE)
+      set(others "")
+      foreach(file IN LISTS files)
+        get_filename_component(name "${file}" NAME)
+        if(name MATCHES "^(lib)?systemc([-.].*)?\\.(so|a|dylib|lib)(\\..*)?$")
+          get_filename_component(real "${file}" REALPATH)
+          if(real STREQUAL ours_real)
+            set(has_ours TRUE)
+          else()
+            list(APPEND others "${file}")
+          endif()
+        endif()
+      endforeach()
+      if(has_ours AND others)
+        list(REMOVE_DUPLICATES others)
+        string(JOIN ", " others ${others})
+        message(FATAL_ERROR "Target ${target} (${folder}) links SpecularUnit's SystemC, ${ours}, "
+                "and another SystemC library beside it: ${others}. Two SystemC libraries in one "
+                "program break in SystemC's static initialisers before main runs. Link only "
+                "SystemC::systemc, the one SpecularUnit gives (docs/integration.md §9).")
+      endif()
+    endforeach()
+  endwhile()
+endfunction()
+
+function(_specular_systemc_defer_mix_check ours)
+  get_property(deferred GLOBAL PROPERTY SPECULAR_SYSTEMC_MIX_CHECK)
+  if(deferred OR NOT ours OR CMAKE_VERSION VERSION_LESS 3.19)  # cmake_language(DEFER): 3.19
+    return()
+  endif()
+  set_property(GLOBAL PROPERTY SPECULAR_SYSTEMC_MIX_CHECK TRUE)
+  cmake_language(EVAL CODE
+    "cmake_language(DEFER DIRECTORY [[${CMAKE_SOURCE_DIR}]] CALL _specular_systemc_check_mix [[${ours}]])")
+endfunction()
+
 # ---- find -------------------------------------------------------------------------
 set(_specular_by "")
 set(_specular_where "")
+# Whether SystemC::systemc is one this file made (here or in an earlier run), not the project's.
+get_property(_specular_systemc_ours GLOBAL PROPERTY SPECULAR_SYSTEMC_MADE_HERE)
 if(TARGET SystemC::systemc)  # the including project's own (or an earlier run of this file)
   if(TARGET PkgConfig::SYSTEMC_PC AND DEFINED _specular_systemc_pc_dir)
     set(_specular_by "pkg-config")
     set(_specular_where "${_specular_systemc_pc_dir}")
-  elseif(SystemCLanguage_DIR AND EXISTS "${SystemCLanguage_DIR}")
+  elseif(SystemCLanguage_FOUND AND SystemCLanguage_DIR AND EXISTS "${SystemCLanguage_DIR}")
+    # Only when find_package(SystemCLanguage) made it: a SystemCLanguage_DIR left in the
+    # cache says nothing of a target the project made otherwise (issue 35).
     set(_specular_by "CMake package")
     set(_specular_where "${SystemCLanguage_DIR}")
   else()
@@ -232,6 +331,10 @@ else()
       set(_specular_by "pkg-config")
     endif()
   endif()
+  if(TARGET SystemC::systemc)
+    set(_specular_systemc_ours TRUE)
+    set_property(GLOBAL PROPERTY SPECULAR_SYSTEMC_MADE_HERE TRUE)
+  endif()
   if(_specular_by STREQUAL "CMake package")
     set(_specular_where "${SystemCLanguage_DIR}")
   elseif(_specular_by STREQUAL "pkg-config")
@@ -247,21 +350,62 @@ function(_specular_systemc_text out version cxx api by where)
   if(NOT version)
     set(version "of unknown version")
   endif()
-  if(api)
-    set(text "${version} for ${cxx_name} (${api}, ${by} at ${where})")
+  if(by STREQUAL "target")
+    set(place "this project's own SystemC::systemc target, library ${where}")
   else()
-    set(text "${version} (${by} at ${where}, whose library could not be read for its C++ standard)")
+    set(place "${by} at ${where}")
+  endif()
+  if(api)
+    set(text "${version} for ${cxx_name} (${api}, ${place})")
+  else()
+    set(text "${version} (${place}, whose library could not be read for its C++ standard)")
   endif()
   set(${out} "${text}" PARENT_SCOPE)
 endfunction()
 
 set(_specular_set_it "SystemCLanguage_DIR=<prefix>/lib/cmake/SystemCLanguage (a SystemC built with CMake) or the environment variable PKG_CONFIG_PATH=<folder of its systemc.pc>")
+
+# The whole fix that gives the installed package its recorded SystemC (issue 35): what to
+# set, and what to unset or change first so that the setting is the one used — a
+# SystemCLanguage_DIR is used before pkg-config, and a SystemC::systemc the project makes
+# before find_package(SpecularUnit) is used before either.
+function(_specular_systemc_fix out)
+  set(by "${SpecularUnit_SYSTEMC_FOUND_BY}")
+  set(at "${SpecularUnit_SYSTEMC_LOCATION}")
+  set(steps "")
+  if(TARGET SystemC::systemc AND NOT _specular_systemc_ours)
+    if(SystemCLanguage_FOUND)
+      set(how "by find_package(SystemCLanguage) at ${SystemCLanguage_DIR}")
+    else()
+      set(how "not by SpecularUnit")
+    endif()
+    list(APPEND steps "this project makes SystemC::systemc itself before find_package(SpecularUnit) (${how}): make it from that SystemC, or call find_package(SpecularUnit) first, which then makes it")
+  endif()
+  if(NOT EXISTS "${at}")
+    list(APPEND steps "it is no longer at ${at}: install it there again, or point to where it is now with ${_specular_set_it}")
+  elseif(by STREQUAL "CMake package")
+    list(APPEND steps "set SystemCLanguage_DIR=${at} (cmake -DSystemCLanguage_DIR=${at})")
+  elseif(by STREQUAL "pkg-config")
+    if(SystemCLanguage_DIR)
+      list(APPEND steps "unset SystemCLanguage_DIR (cmake -U SystemCLanguage_DIR; it is ${SystemCLanguage_DIR} and is used before pkg-config) and set the environment variable PKG_CONFIG_PATH=${at}")
+    else()
+      list(APPEND steps "set the environment variable PKG_CONFIG_PATH=${at}")
+    endif()
+  endif()
+  string(JOIN "; " text ${steps})
+  set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
 if(NOT TARGET SystemC::systemc)
   set(_specular_problem "no SystemC found: neither Accellera's CMake package SystemCLanguage nor pkg-config's systemc.pc")
   if(DEFINED SpecularUnit_SYSTEMC_API)
     _specular_systemc_text(_specular_built "${SpecularUnit_SYSTEMC_VERSION}" "${SpecularUnit_SYSTEMC_CXX}"
       "${SpecularUnit_SYSTEMC_API}" "${SpecularUnit_SYSTEMC_FOUND_BY}" "${SpecularUnit_SYSTEMC_LOCATION}")
-    set(SpecularUnit_NOT_FOUND_MESSAGE "SpecularUnit was built with SystemC ${_specular_built}, and ${_specular_problem}. Set ${_specular_set_it}.")
+    _specular_systemc_fix(_specular_fix)
+    string(CONCAT SpecularUnit_NOT_FOUND_MESSAGE
+        "SpecularUnit was built with SystemC ${_specular_built}, and ${_specular_problem}. "
+        "For SpecularUnit::specular and ::twin: ${_specular_fix}. For SpecularUnit::core alone, "
+        "which needs no SystemC: find_package(SpecularUnit COMPONENTS core) (docs/integration.md §9).")
     return()
   endif()
   message(FATAL_ERROR "SpecularUnit needs SystemC 2.3 or 3.0: ${_specular_problem}. "
@@ -285,15 +429,17 @@ if(DEFINED SpecularUnit_SYSTEMC_API)  # the installed package: the consumer's Sy
     set(_specular_differs TRUE)
   endif()
   if(_specular_differs)
+    _specular_systemc_fix(_specular_fix)
     _specular_systemc_cxx_name(_specular_built_cxx "${SpecularUnit_SYSTEMC_CXX}" "${SpecularUnit_SYSTEMC_API}")
     string(CONCAT SpecularUnit_NOT_FOUND_MESSAGE
         "SpecularUnit was built with SystemC ${_specular_built}, but this project's SystemC is "
         "${_specular_found}: a library compiled against one SystemC does not link against "
-        "another. Give it SystemC ${SpecularUnit_SYSTEMC_VERSION} built for ${_specular_built_cxx}: set "
-        "${_specular_set_it}; or rebuild SpecularUnit with SystemC ${SPECULAR_SYSTEMC_VERSION} "
+        "another. Give it SystemC ${SpecularUnit_SYSTEMC_VERSION} built for ${_specular_built_cxx}: "
+        "${_specular_fix}; or rebuild SpecularUnit with SystemC ${SPECULAR_SYSTEMC_VERSION} "
         "(docs/integration.md §9).")
     return()
   endif()
+  _specular_systemc_defer_mix_check("${SPECULAR_SYSTEMC_LIBRARY}")
   if(NOT SPECULAR_SYSTEMC_API AND SpecularUnit_SYSTEMC_API)
     message(WARNING "SpecularUnit was built with SystemC ${_specular_built}; this project's "
             "SystemC is ${_specular_found}: the C++ standard cannot be checked, and the link "

@@ -2,7 +2,8 @@
 # Checks that a SoC project can use the IP as a package (issues 3 and 20):
 #   1. installs a configured build tree into a temporary prefix (cmake --install), moves
 #      it, and checks the prefix holds only the libraries, their headers and the package,
-#      and names no file of the build tree or of the folder it was installed into;
+#      and that no installed file, archives included, names the build tree, the source
+#      tree or the folder it was installed into;
 #   2. compiles every installed header alone under -Wall -Wextra -Wpedantic -Werror,
 #      not as a SYSTEM header, with what find_package(SpecularUnit) gives a consumer: the
 #      SystemC BUILD was built with (recorded in the package, issue 30), which every
@@ -12,7 +13,9 @@
 #      example, a plain int main() on SpecularUnit::core that must need no SystemC
 #      library, and the example SoC platform with each target (lt, pin, rtl, rtl-sync),
 #      each also under its strict initiator (--strict: the delay never shrinks);
-#   4. configures, builds and runs the same consumer with add_subdirectory on the
+#   4. configures, builds and runs consumer_core alone with COMPONENTS core while no
+#      SystemC can be found (issue 35);
+#   5. configures, builds and runs the same consumer with add_subdirectory on the
 #      source tree (lt and pin: the twin's build is not repeated there).
 # Usage: scripts/consumer_check.sh [BUILD_DIR]   (default: build, relative to the repo)
 set -euo pipefail
@@ -39,11 +42,14 @@ if [[ $rtl == ON ]]; then cmake --build "$build" --target specular_twin -j "$job
 # was installed, nor on any file of the build tree (the twin writes its ROMs from C++).
 cmake --install "$build" --prefix "$work/install_first" >"$work/install.log"
 mv "$work/install_first" "$work/prefix"
-# (The archives may carry debug information naming sources; the ROM images are data.)
-if named=$( (grep -rlF --include='*.cmake' -e "$build/" -e "$work/install_first" "$work/prefix";
-             grep -rlaF -e "$build/rtl/rom" "$work/prefix") | sort -u | grep .); then
-  echo "consumer_check: FAIL: installed files name the build tree, its ROM images or the first install folder:" >&2
-  echo "$named" >&2
+# Every installed file, archives included (issue 35), names neither the build tree, the
+# source tree nor the first install folder.
+if named=$(grep -rlaF -e "$build" -e "$root" -e "$work/install_first" "$work/prefix"); then
+  echo "consumer_check: FAIL: installed files name the build tree ($build), the source tree ($root) or the first install folder:" >&2
+  while read -r file; do
+    echo "  $file: $(grep -aoF -e "$build" -e "$root" -e "$work/install_first" "$file" | wc -l) strings, e.g." \
+         "$(strings -a "$file" | grep -F -m1 -e "$build" -e "$root" -e "$work/install_first")" >&2
+  done <<<"$named"
   exit 1
 fi
 (cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
@@ -160,6 +166,19 @@ cmake -S "$root/examples/consumer" -B "$work/installed" -DCMAKE_BUILD_TYPE=Relea
 expect_systemc "$work/configure1.log"
 cmake --build "$work/installed" -j "$jobs" >"$work/build1.log"
 run_platforms "$work/installed" $targets
+
+echo "== consumer_core alone, COMPONENTS core, every SystemC hidden (issue 35)"
+mkdir -p "$work/no_systemc"
+if PKG_CONFIG_LIBDIR="$work/no_systemc" PKG_CONFIG_PATH= pkg-config --exists systemc; then
+  echo "consumer_check: FAIL: pkg-config still finds systemc with PKG_CONFIG_LIBDIR empty" >&2
+  exit 1
+fi
+PKG_CONFIG_LIBDIR="$work/no_systemc" PKG_CONFIG_PATH= SystemCLanguage_DIR= \
+  cmake -S "$root/examples/consumer" -B "$work/core_only" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_PREFIX_PATH="$work/prefix" -DSPECULAR_CONSUMER_CORE_ONLY=ON \
+        -DCMAKE_DISABLE_FIND_PACKAGE_SystemCLanguage=ON --no-warn-unused-cli >"$work/configure_core.log"
+cmake --build "$work/core_only" -j "$jobs" >"$work/build_core.log"
+"$work/core_only/consumer_core" | tail -1
 
 echo "== consumer with add_subdirectory on $root (targets: lt pin)"
 cmake -S "$root/examples/consumer" -B "$work/subdir" -DCMAKE_BUILD_TYPE=Release \

@@ -6,6 +6,7 @@
 #   scripts/farm.sh resubmit DIR [options]        run again only the tasks that failed
 #   scripts/farm.sh task DIR ID                   one task (what each array task runs)
 #   scripts/farm.sh merge DIR                     the merge (what the merge job runs)
+#   scripts/farm.sh list REGRESSION [--build DIR] its tasks, one a line
 #
 # Options of submit and resubmit:
 #   --out DIR          the run's folder (default: farm-REGRESSION-<UTC time> here)
@@ -367,7 +368,8 @@ case "$command" in
   task) (($# == 3)) || die "usage: farm.sh task DIR ID"; run_task "$2" "$3" ;;
   merge) (($# == 2)) || die "usage: farm.sh merge DIR"; run_merge "$2" ;;
   wait) (($# == 2)) || die "usage: farm.sh wait DIR"; wait_for "$(cd "$2" && pwd)" ;;
-  list) (($# == 2)) || die "usage: farm.sh list REGRESSION"; build="$root/build"; regression_tasks "$2" ;;
-  -h|--help|"") sed -n '2,26p' "$script" | sed 's/^# \{0,1\}//' ;;
+  list) (($# >= 2)) || die "usage: farm.sh list REGRESSION [--build DIR]"
+        regression=$2; shift 2; parse_options "$@"; regression_tasks "$regression" ;;
+  -h|--help|"") sed -n '2,27p' "$script" | sed 's/^# \{0,1\}//' ;;
   *) die "unknown command '$command' (allowed: submit, resubmit, wait, task, merge, list)" ;;
 esac

@@ -51,6 +51,7 @@ PACKAGES=(
   gcc-riscv64-unknown-elf picolibc-riscv64-unknown-elf
   gcc-arm-none-eabi libnewlib-arm-none-eabi
   clang
+  zlib1g-dev  # the twin's FST writer (Verilator --trace-fst) links zlib; the package's find_dependency(ZLIB) (issue 35)
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

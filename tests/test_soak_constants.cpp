@@ -57,3 +57,26 @@ TEST(SoakConstants, BadConstantsExitTwoNamingTheChoices) {
 }
 
 }  // namespace
+
+// Issue 35: the TLM pin target's delay policy is a setting, chosen with --pin-delay
+// (default keep); both policies give the core's bits, a bad name is refused naming the
+// allowed ones.
+namespace {
+
+TEST(SoakPinDelay, EitherPolicyGivesTheCoresBitsAndABadOneIsNamed) {
+  for (const std::string policy : {"keep", "consume"}) {
+    SCOPED_TRACE(policy);
+    const SoakRun r = run_soak("--core 0 --pin 0 --tlm 0 --tlm-pin 40 --pin-delay " + policy);
+    EXPECT_EQ(r.status, 0) << r.out;
+    ASSERT_EQ(r.stages.count("tlm-pin"), 1u) << r.out;
+    EXPECT_EQ(r.stages.at("tlm-pin").at("ops"), 40);
+    EXPECT_EQ(r.stages.at("tlm-pin").at("mismatches"), 0);
+  }
+  const SoakRun bad = run_soak("--core 0 --pin 0 --tlm 0 --tlm-pin 1 --pin-delay later");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.out.find("--pin-delay: pin delay policy 'later' is not one of: keep, consume"),
+            std::string::npos)
+      << bad.out;
+}
+
+}  // namespace

@@ -475,6 +475,33 @@ TEST(SocPlatformCommandLine, BadArgumentsAreNamedWithTheAllowedValues) {
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("--operations '0' is not a whole number in 1..100000"), std::string::npos)
       << outcome.err;
+  outcome = testing_support::run_command("'" + exe + "' --target pin --pin-delay sideways", dir);
+  EXPECT_EQ(outcome.status, 2);
+  EXPECT_NE(outcome.err.find("--pin-delay: pin delay policy 'sideways' is not one of: keep, consume"),
+            std::string::npos)
+      << outcome.err;
+}
+
+// Issue 35: the pin target's delay policy is a setting (PinTargetSettings::delay), an
+// option here; its default is keep, which the strict (riscv-vp-like) CPU accepts, and
+// consume is still there to choose — and the strict CPU refuses it.
+TEST(SocPlatformCommandLine, PinDelayDefaultsToKeepAndConsumeIsRefusedByTheStrictCpu) {
+  const std::string exe = std::string(SPECULAR_BINARY_DIR) + "/examples/soc_platform/soc_platform";
+  const auto dir = testing_support::fresh_directory("run");
+  auto outcome = testing_support::run_command(
+      "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe + "' --target pin --strict --operations 4", dir);
+  EXPECT_EQ(outcome.status, 0) << outcome.out << outcome.err;
+  EXPECT_NE(outcome.out.find("4/4 operations equal to Core, 4 interrupts"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find(", pin delay keep: PASS"), std::string::npos) << outcome.out;
+  outcome = testing_support::run_command("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe +
+                                             "' --target pin --strict --operations 4 --pin-delay consume",
+                                         dir);
+  EXPECT_NE(outcome.status, 0) << outcome.out;
+  EXPECT_NE(outcome.err.find("strict initiator: the delay shrank"), std::string::npos) << outcome.err;
+  outcome = testing_support::run_command(
+      "SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 '" + exe + "' --target pin --operations 4 --pin-delay consume", dir);
+  EXPECT_EQ(outcome.status, 0) << outcome.out << outcome.err;
+  EXPECT_NE(outcome.out.find(", pin delay consume: PASS"), std::string::npos) << outcome.out;
 }
 
 }  // namespace

@@ -10,7 +10,9 @@ set(RTL_MULTIPLIER_RGB_PARAMS -GNORM_W=31 -GRGB_BITS=8 -GOUT_W=32 -GSHIFT=7)
 set(RTL_MULTIPLIER_RGB_DIR ${CMAKE_CURRENT_BINARY_DIR}/Vmultiplier_rgb)
 verilate(specular_rtl_models PREFIX Vmultiplier_rgb TOP_MODULE multiplier_rgb
   DIRECTORY ${RTL_MULTIPLIER_RGB_DIR}
-  SOURCES ${RTL_DIR}/multiplier_rgb.v ${RTL_DIR}/multiply_round_saturate.v
+  # Relative to twin/, where Verilator runs: the installed archive names no folder of
+  # this machine (issue 35, twin/CMakeLists.txt).
+  SOURCES ../rtl/multiplier_rgb.v ../rtl/multiply_round_saturate.v
   VERILATOR_ARGS ${RTL_VERILATOR_ARGS} ${RTL_MULTIPLIER_RGB_PARAMS}
   OPT_FAST ${RTL_OPT})
 

@@ -2,14 +2,18 @@
 // initiator with a quantum keeper, a generic bus, a RAM — run with the chosen target.
 //
 //   soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]
+//                [--pin-delay keep|consume]
 //
 // --strict: the CPU asserts, as riscv-vp's memory interface does, that b_transport
 // never returns a delay smaller than the local time it passed in (platform.h).
+// --pin-delay: the pin target's delay policy (PinTargetSettings::delay; default keep,
+// docs/integration.md §6); consume under --strict aborts at the first START.
 // Prints one line and exits 0 when every result equals Core's and every operation
 // raised one interrupt; 1 otherwise; 2 for a bad command line; a strict assert that
 // fails aborts.
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 
 #include "platform.h"
@@ -19,7 +23,7 @@ namespace {
 int usage(const std::string& problem) {
   std::cerr << "soc_platform: " << problem << "\n"
             << "usage: soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]"
-               "  (N in 1.."
+               " [--pin-delay keep|consume]  (N in 1.."
             << soc::max_operations << ")\n";
   return 2;
 }
@@ -31,9 +35,10 @@ int sc_main(int argc, char* argv[]) {
   std::string target_name = "lt";
   long operations = 50;
   bool strict = false;
+  specular::PinDelay pin_delay = specular::PinTargetSettings{}.delay;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if ((arg == "--target" || arg == "--operations") && i + 1 == argc)
+    if ((arg == "--target" || arg == "--operations" || arg == "--pin-delay") && i + 1 == argc)
       return usage(arg + " needs a value");
     if (arg == "--target") {
       target_name = argv[++i];
@@ -52,6 +57,12 @@ int sc_main(int argc, char* argv[]) {
                      std::to_string(soc::max_operations));
     } else if (arg == "--strict") {
       strict = true;
+    } else if (arg == "--pin-delay") {
+      try {
+        pin_delay = specular::pin_delay_from_string(argv[++i]);
+      } catch (const std::invalid_argument& e) {
+        return usage(std::string("--pin-delay: ") + e.what());
+      }
     } else {
       return usage("unknown argument '" + arg + "'");
     }
@@ -60,7 +71,7 @@ int sc_main(int argc, char* argv[]) {
     return usage("this build has no " + target_name +
                  " target (the package was installed or found without its rtl component)");
 
-  soc::Platform platform("soc", target, static_cast<std::size_t>(operations), strict);
+  soc::Platform platform("soc", target, static_cast<std::size_t>(operations), strict, pin_delay);
   sc_core::sc_start();
 
   const soc::Cpu& cpu = platform.cpu;
@@ -70,6 +81,7 @@ int sc_main(int argc, char* argv[]) {
             << ": " << cpu.matches << "/" << operations
             << " operations equal to Core, " << platform.interrupts << " interrupts, "
             << sc_core::sc_time_stamp() << " simulated"
+            << (target == soc::Target::pin ? std::string(", pin delay ") + specular::to_string(pin_delay) : "")
             << (cpu.failure.empty() ? "" : ", failure: " + cpu.failure) << ": "
             << (pass ? "PASS" : "FAIL") << std::endl;
   return pass ? 0 : 1;

@@ -15,7 +15,8 @@
 // keeper's local time as `delay`, asserts after b_transport that the delay did not
 // shrink, and sets the keeper to it; the assert is on in every build type (it aborts,
 // as assert() does). Every access goes through it, the bursts included. The pin target
-// is then built with PinDelay::keep, as such a platform needs (docs/integration.md §6).
+// keeps the delay by default (PinDelay::keep, as such a platform needs,
+// docs/integration.md §6); --pin-delay consume shows the strict CPU refusing the other.
 #pragma once
 
 #include <cstdint>
@@ -212,12 +213,12 @@ class Cpu : public sc_core::sc_module {
 class Platform : public sc_core::sc_module {
  public:
   Platform(sc_core::sc_module_name name, Target target, std::size_t operations,
-           bool strict = false)
+           bool strict = false, specular::PinDelay pin_delay = specular::PinTargetSettings{}.delay)
       : sc_module(name),
         cpu("cpu", operations, strict),
         bus("bus", {{ram_base, ram_bytes, "to_ram"}, {ip_base, specular::map_size, "to_ip"}}),
         ram("ram", ram_bytes),
-        ip(make_ip(target, strict)) {
+        ip(make_ip(target, pin_delay)) {
     cpu.bus.bind(bus.socket);
     bus.output(0).bind(ram.socket);
     bus.output(1).bind(ip->socket);
@@ -244,14 +245,16 @@ class Platform : public sc_core::sc_module {
   std::size_t interrupts = 0;  ///< rising edges of done_irq, by callback
 
  private:
-  static std::unique_ptr<specular::SpecularTarget> make_ip(Target target, bool strict) {
+  static std::unique_ptr<specular::SpecularTarget> make_ip(Target target, specular::PinDelay pin_delay) {
     switch (target) {
       case Target::lt: return std::make_unique<specular::SpecularLtTarget>("ip");
-      case Target::pin:
-        // A strict initiator refuses a delay that shrinks: the pin target keeps it.
-        return std::make_unique<specular::SpecularPinTarget>(
-            "ip", specular::Config{}, sc_core::sc_time(10, sc_core::SC_NS), false,
-            strict ? specular::PinDelay::keep : specular::PinDelay::consume);
+      case Target::pin: {
+        // The delay policy is part of the target's settings (a strict initiator refuses
+        // a delay that shrinks: keep, the default, never shrinks it).
+        specular::PinTargetSettings settings;
+        settings.delay = pin_delay;
+        return std::make_unique<specular::SpecularPinTarget>("ip", specular::Config{}, settings);
+      }
 #ifdef SOC_PLATFORM_HAS_RTL
       case Target::rtl: return std::make_unique<specular::SpecularRtlTarget>("ip");
       case Target::rtl_sync: return std::make_unique<specular::SpecularRtlSyncTarget>("ip");

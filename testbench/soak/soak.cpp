@@ -61,6 +61,13 @@ SoakOptions parse_soak_options(const std::vector<std::string>& args) {
     else if (option == "--tlm") o.tlm_ops = parse_count(option, value);
     else if (option == "--tlm-pin") o.tlm_pin_ops = parse_count(option, value);
     else if (option == "--inject-fault") o.inject_fault = parse_count(option, value);
+    else if (option == "--pin-delay") {
+      try {
+        o.pin_delay = pin_delay_from_string(value);
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--pin-delay: ") + e.what());
+      }
+    }
     else if (option == "--constants") {
       try {
         o.constants = parse_constants(value);
@@ -84,7 +91,7 @@ SoakOptions parse_soak_options(const std::vector<std::string>& args) {
 std::string soak_help() {
   return R"(specular_soak: constrained-random soak of the specular device models.
 
-Usage: specular_soak [--core N] [--pin N] [--tlm N] [--tlm-pin N] [--seed S]
+Usage: specular_soak [--core N] [--pin N] [--tlm N] [--tlm-pin N] [--pin-delay P] [--seed S]
                      [--constants C] [--inject-fault K] [--quiet]
 
   --core N       operations through the bit-accurate core, cycling through every
@@ -94,6 +101,9 @@ Usage: specular_soak [--core N] [--pin N] [--tlm N] [--tlm-pin N] [--seed S]
   --tlm N        operations through the TLM lt target over a bus, with temporal
                  decoupling (1 us quantum), single and batch transactions (default 1000000)
   --tlm-pin N    operations through the TLM pin target (transactor) (default 100000)
+  --pin-delay keep|consume
+                 the TLM pin target's delay policy (default keep: the delay the
+                 initiator annotates is returned unchanged; docs/integration.md §6)
   --seed S       seed of the 64-bit Mersenne Twister (default 1)
   --constants C  patent|minimax-half|minimax: the device's pins 19 (h), 20 (a) and
                  ROM 38's scale in every stage, the reference's too (default patent);
@@ -358,10 +368,15 @@ class TlmSoak : public sc_core::sc_module {
         core_(soak_config(options)) {
     SPECULAR_HAS_PROCESS(TlmSoak);
     const sc_core::sc_time period(10, sc_core::SC_NS);
-    if (pin_target)
-      target_ = std::make_unique<SpecularPinTarget>("target", soak_config(options), period);
-    else
+    if (pin_target) {
+      PinTargetSettings settings;
+      settings.clock_period = period;
+      settings.delay = options.pin_delay;
+      target_ = std::make_unique<SpecularPinTarget>("target", soak_config(options), settings);
+    }
+    else {
       target_ = std::make_unique<SpecularLtTarget>("target", soak_config(options), period);
+    }
     socket.bind(target_->socket);
     target_->done_irq(irq_);
     SC_THREAD(run);

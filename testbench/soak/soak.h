@@ -11,6 +11,7 @@
 
 #include "input.h"
 #include "specular/core.h"
+#include "specular/tlm/pin_target.h"
 
 namespace specular {
 namespace soak {
@@ -20,6 +21,8 @@ struct SoakOptions {
   std::size_t pin_ops = 1000000;    ///< through the pin-level device (PinHarness)
   std::size_t tlm_ops = 1000000;    ///< through the TLM `lt` target (SpecularDriver)
   std::size_t tlm_pin_ops = 100000;  ///< through the TLM `pin` target (transactor)
+  /// --pin-delay: the TLM pin target's delay policy (PinTargetSettings::delay, issue 35).
+  PinDelay pin_delay = PinTargetSettings{}.delay;
   std::uint64_t seed = 1;
   /// The device's constants (pins 19, 20, ROM 38's scale) in every stage; the
   /// reference and the core follow it.

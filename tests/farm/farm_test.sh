@@ -38,9 +38,9 @@ fail() { echo "farm_test.sh: FAIL: $*" >&2; exit 1; }
 if [[ $executor == slurm ]]; then
   "$cluster" start "$scratch/cluster"
   export SLURM_CONF="$scratch/cluster/etc/slurm.conf"
-  run_options=(--executor slurm --time 10)
+  run_options=(--executor slurm --time 10 --build "$build")
 else
-  run_options=(--executor local --jobs 2)
+  run_options=(--executor local --jobs 2 --build "$build")
 fi
 
 # The unsharded reference of every group of the smoke regression.
@@ -48,7 +48,7 @@ mkdir -p "$scratch/ref"
 while IFS=$'\t' read -r group kind args; do
   "$build/testbench/specular_$kind" $args --partial "$scratch/ref/$group.json" >"$scratch/ref/$group.txt" ||
     fail "unsharded $group failed"
-done < <("$farm" list smoke | awk -F'\t' '!seen[$2]++ {sub(/ --shard [0-9]+\/[0-9]+$/, "", $4); print $2 "\t" $3 "\t" $4}')
+done < <("$farm" list smoke --build "$build" | awk -F'\t' '!seen[$2]++ {sub(/ --shard [0-9]+\/[0-9]+$/, "", $4); print $2 "\t" $3 "\t" $4}')
 
 summary_block() { sed -n '/^summary:/,$p' "$1" | grep -v '^  run time '; }
 check_merged() {  # check_merged RUN_DIR

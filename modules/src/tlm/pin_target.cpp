@@ -1,13 +1,27 @@
 #include "specular/tlm/pin_target.h"
 
+#include <stdexcept>
+
 namespace specular {
+
+const char* to_string(PinDelay delay) { return delay == PinDelay::keep ? "keep" : "consume"; }
+
+PinDelay pin_delay_from_string(const std::string& text) {
+  if (text == "keep") return PinDelay::keep;
+  if (text == "consume") return PinDelay::consume;
+  throw std::invalid_argument("pin delay policy '" + text + "' is not one of: keep, consume");
+}
 
 SpecularPinTarget::SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
                                      const sc_core::sc_time& clock_period, bool real_views,
                                      PinDelay delay)
-    : SpecularTarget(name, config, clock_period),
-      harness("harness", config, clock_period, real_views, ClockMode::on_demand),
-      delay_policy_(delay) {
+    : SpecularPinTarget(name, config, PinTargetSettings{clock_period, real_views, delay}) {}
+
+SpecularPinTarget::SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
+                                     const PinTargetSettings& settings)
+    : SpecularTarget(name, config, settings.clock_period),
+      harness("harness", config, settings.clock_period, settings.real_views, ClockMode::on_demand),
+      delay_policy_(settings.delay) {
   SPECULAR_HAS_PROCESS(SpecularPinTarget);
   SC_METHOD(on_reset);
   sensitive << harness.pin29_reset_n.negedge_event();

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "specular/pin_harness.h"
@@ -21,7 +22,25 @@ enum class PinDelay : std::uint8_t {
   /// call waits exactly the operation's latency (start edge, then pin 35), which is the
   /// time the initiator gains, so nothing is counted twice and the delay never
   /// shrinks. For initiators that assert it does not (riscv-vp's memory interface).
+  /// The default (PinTargetSettings).
   keep,
+};
+
+/// "keep" or "consume".
+const char* to_string(PinDelay delay);
+/// PinDelay from "keep" or "consume"; throws std::invalid_argument naming the value and
+/// the allowed ones (for options such as specular_tb's and soc_platform's --pin-delay).
+PinDelay pin_delay_from_string(const std::string& text);
+
+/// SpecularPinTarget's configuration beyond the device's Config (issue 35): set its
+/// fields by name, e.g. `PinTargetSettings settings; settings.delay = PinDelay::consume;`.
+struct PinTargetSettings {
+  sc_core::sc_time clock_period = sc_core::sc_time(10, sc_core::SC_NS);  ///< pin 28's period
+  bool real_views = false;  ///< PinHarness's real-valued views (traces)
+  /// What b_transport does with the annotated delay. Default keep: the delay never
+  /// shrinks, which every initiator accepts and riscv-vp's memory interface asserts
+  /// (docs/integration.md §6).
+  PinDelay delay = PinDelay::keep;
 };
 
 /// Drives the device of Fig. 1 through PinHarness, as a TLM-to-pin bridge does
@@ -46,13 +65,16 @@ enum class PinDelay : std::uint8_t {
 /// returned, then runs — a START or an operand write waits its turn instead of being
 /// refused as busy. Reads never wait: they see STATUS.busy and the previous results
 /// while an operation runs. Debug transport never waits. Call b_transport from a
-/// thread (SC_THREAD or spawned). `delay` picks what b_transport does with the
-/// annotated delay (PinDelay: consume, the default, or keep).
+/// thread (SC_THREAD or spawned). PinTargetSettings::delay picks what b_transport does
+/// with the annotated delay (PinDelay: keep, the default, or consume).
 class SpecularPinTarget : public SpecularTarget {
  public:
+  SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
+                    const PinTargetSettings& settings);
+  /// The positional form, as before; `delay` now defaults to keep, as the settings do.
   SpecularPinTarget(sc_core::sc_module_name name, const Config& config = Config{},
-                    const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS),
-                    bool real_views = false, PinDelay delay = PinDelay::consume);
+                             const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS),
+                             bool real_views = false, PinDelay delay = PinDelay::keep);
 
   PinHarness harness;
   PinDelay delay_policy() const { return delay_policy_; }

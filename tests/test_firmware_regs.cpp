@@ -15,6 +15,7 @@
 
 #include "specular/specular_regs.h"
 #include "specular/format.h"
+#include "specular/rom38_banks.h"
 #include "specular/tlm/register_fields.h"
 #include "specular/tlm/register_map.h"
 
@@ -113,12 +114,13 @@ struct CField {
   {Reg::reg, #NAME, SPECULAR_##REG##_##NAME##_SHIFT, SPECULAR_##REG##_##NAME##_WIDTH, \
    SPECULAR_##REG##_##NAME##_MASK, SPECULAR_##REG##_##NAME##_ACCESS}
 const CField c_fields[] = {
+    FIELD(VERSION, MINOR, version),       FIELD(VERSION, MAJOR, version),
+    FIELD(CONFIG, NORMALISATION, config), FIELD(CONFIG, SATURATION, config),
+    FIELD(CONFIG, CONSTANTS, config),     FIELD(CONFIG, COS_FRAC_BITS, config),
+    FIELD(CONFIG, OUT_FRAC_BITS, config), FIELD(CONFIG, RGB_BITS, config),
     FIELD(STATUS, BUSY, status),          FIELD(STATUS, DONE, status),
     FIELD(STATUS, ERROR, status),         FIELD(STATUS, CAUSE, status),
-    FIELD(CONTROL, START, control),       FIELD(CONFIG, NORMALISATION, config),
-    FIELD(CONFIG, SATURATION, config),    FIELD(CONFIG, CONSTANTS, config),
-    FIELD(CONFIG, COS_FRAC_BITS, config), FIELD(CONFIG, OUT_FRAC_BITS, config),
-    FIELD(CONFIG, RGB_BITS, config),
+    FIELD(CONTROL, START, control),
 };
 #undef FIELD
 
@@ -173,6 +175,10 @@ TEST(FirmwareHeader, FieldsAreWhereTheTargetPutsThem) {
                   word);
       }
   EXPECT_EQ(SPECULAR_FIELD_GET(SPECULAR_STATUS_CAUSE, 0x00000704u), 7u);
+  // VERSION is (major << 16) | minor: 0x00010001 is 1.1.
+  EXPECT_EQ(SPECULAR_FIELD_GET(SPECULAR_VERSION_MAJOR, 0x00030002u), 3u);
+  EXPECT_EQ(SPECULAR_FIELD_GET(SPECULAR_VERSION_MINOR, 0x00030002u), 2u);
+  EXPECT_EQ(SPECULAR_FIELD_GET(SPECULAR_VERSION_MAJOR, map_version), SPECULAR_MAP_VERSION_MAJOR);
 }
 
 TEST(FirmwareHeader, EveryEnumeratedValueIsTheCppEnumsNumber) {

@@ -1,5 +1,5 @@
 // The IEEE 1685-2014 (IP-XACT) component of the IP, written from the register map
-// (register_map.h, field_map.h) and the Verilog tops' headers (verilog_header.h).
+// (register_map.h, register_fields.h) and the Verilog tops' headers (verilog_header.h).
 // docs/ipxact.md says what is described and how; ip/specular_unit.xml is its output.
 #pragma once
 

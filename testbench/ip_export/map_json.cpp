@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "specular/tlm/field_map.h"
+#include "specular/tlm/register_fields.h"
 #include "specular/tlm/register_map.h"
 
 namespace specular {
@@ -50,8 +50,8 @@ std::string register_map_json() {
       field["width"] = f.width;
       field["access"] = access_name(f.access);
       nlohmann::ordered_json values = nlohmann::ordered_json::array();
-      for (std::uint32_t code = 0; code < value_count(f.values); ++code)
-        values.push_back({{"value", code}, {"name", value_name(f.values, code)}});
+      for (const FieldValue& v : field_values(f.values))
+        values.push_back({{"value", v.value}, {"name", v.name}});
       field["values"] = values;
       fields.push_back(field);
     }

@@ -1,5 +1,5 @@
 // The C++ register map as plain JSON, for the tests that read the IP-XACT and SystemRDL
-// files back (tests/ipxact/): a dump of register_map and field_map as they are (offsets,
+// files back (tests/ipxact/): a dump of register_map and register_fields as they are (offsets,
 // words, access, the reset of every word, fields, enumerations), through none of the
 // writers' code, so that a test compares the files with the C++ table itself.
 #pragma once

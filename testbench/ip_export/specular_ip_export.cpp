@@ -1,5 +1,5 @@
 // specular_ip_export: the IP's descriptions for SoC tools, written from the register map
-// (register_map.h, field_map.h) and the Verilog tops' headers (docs/ipxact.md):
+// (register_map.h, register_fields.h) and the Verilog tops' headers (docs/ipxact.md):
 //
 //   specular_ip_export --source-dir DIR [--version V] [--libdir D]
 //                      [--ipxact FILE] [--systemrdl FILE] [--json FILE]

@@ -17,7 +17,7 @@
       the committed ip/ files equal what specular_ip_export writes now.
 
 The C++ map comes from `specular_ip_export --json`: a dump of register_map and
-field_map (map_json.cpp) that shares no code with the XML and RDL writers; the
+register_fields (map_json.cpp) that shares no code with the XML and RDL writers; the
 expected IP-XACT and SystemRDL words for each C++ access are this file's own tables.
 Exit 0 pass, 1 a difference (each one listed), 2 bad use.
 """

@@ -54,6 +54,16 @@
 #define SPECULAR_VERSION_OFFSET                 0x0004u
 #define SPECULAR_VERSION_ACCESS                 SPECULAR_ACCESS_RO
 #define SPECULAR_VERSION_RESET                  0x00010001u
+/* VERSION[15:0] MINOR: Minor version: compatible additions */
+#define SPECULAR_VERSION_MINOR_SHIFT            0u
+#define SPECULAR_VERSION_MINOR_WIDTH            16u
+#define SPECULAR_VERSION_MINOR_MASK             0x0000FFFFu
+#define SPECULAR_VERSION_MINOR_ACCESS           SPECULAR_ACCESS_RO
+/* VERSION[31:16] MAJOR: Major version: bumped on incompatible changes; a driver refuses another */
+#define SPECULAR_VERSION_MAJOR_SHIFT            16u
+#define SPECULAR_VERSION_MAJOR_WIDTH            16u
+#define SPECULAR_VERSION_MAJOR_MASK             0xFFFF0000u
+#define SPECULAR_VERSION_MAJOR_ACCESS           SPECULAR_ACCESS_RO
 
 /* 0x0008 CONFIG (RO):
  * [1:0] normalisation (0 patent, 1 energy, 2 none, 3 device-energy), [4] saturation (0
@@ -64,7 +74,7 @@
 #define SPECULAR_CONFIG_OFFSET                  0x0008u
 #define SPECULAR_CONFIG_ACCESS                  SPECULAR_ACCESS_RO
 #define SPECULAR_CONFIG_RESET                   0x080D1000u  /* the default configuration's word */
-/* CONFIG[1:0] NORMALISATION: what ROM 38 holds */
+/* CONFIG[1:0] NORMALISATION: What ROM 38 holds: the normalisation policy */
 #define SPECULAR_CONFIG_NORMALISATION_SHIFT     0u
 #define SPECULAR_CONFIG_NORMALISATION_WIDTH     2u
 #define SPECULAR_CONFIG_NORMALISATION_MASK      0x00000003u
@@ -74,7 +84,7 @@
 #define SPECULAR_CONFIG_NORMALISATION_NONE      2u
 #define SPECULAR_CONFIG_NORMALISATION_DEVICE_ENERGY 3u
 #define SPECULAR_CONFIG_NORMALISATION_COUNT     4u  /* number of values above */
-/* CONFIG[4] SATURATION: what adder 8 does with a negative result */
+/* CONFIG[4] SATURATION: What adder 8 does with a negative result */
 #define SPECULAR_CONFIG_SATURATION_SHIFT        4u
 #define SPECULAR_CONFIG_SATURATION_WIDTH        1u
 #define SPECULAR_CONFIG_SATURATION_MASK         0x00000010u
@@ -82,7 +92,7 @@
 #define SPECULAR_CONFIG_SATURATION_CLAMP        0u
 #define SPECULAR_CONFIG_SATURATION_LITERAL      1u
 #define SPECULAR_CONFIG_SATURATION_COUNT        2u  /* number of values above */
-/* CONFIG[6:5] CONSTANTS: the constants on pins 19 and 20 and ROM 38's scale */
+/* CONFIG[6:5] CONSTANTS: The constants on pins 19 (h) and 20 (a) and ROM 38's scale */
 #define SPECULAR_CONFIG_CONSTANTS_SHIFT         5u
 #define SPECULAR_CONFIG_CONSTANTS_WIDTH         2u
 #define SPECULAR_CONFIG_CONSTANTS_MASK          0x00000060u
@@ -91,17 +101,17 @@
 #define SPECULAR_CONFIG_CONSTANTS_MINIMAX_HALF  1u
 #define SPECULAR_CONFIG_CONSTANTS_MINIMAX       2u
 #define SPECULAR_CONFIG_CONSTANTS_COUNT         3u  /* number of values above */
-/* CONFIG[15:8] COS_FRAC_BITS: fraction bits of COS (U1.F): 1.0 is 1 << F */
+/* CONFIG[15:8] COS_FRAC_BITS: Fraction bits of COS (U1.F): 1.0 is 1 << F */
 #define SPECULAR_CONFIG_COS_FRAC_BITS_SHIFT     8u
 #define SPECULAR_CONFIG_COS_FRAC_BITS_WIDTH     8u
 #define SPECULAR_CONFIG_COS_FRAC_BITS_MASK      0x0000FF00u
 #define SPECULAR_CONFIG_COS_FRAC_BITS_ACCESS    SPECULAR_ACCESS_RO
-/* CONFIG[23:16] OUT_FRAC_BITS: fraction bits of OUT_R, OUT_G, OUT_B (signed) */
+/* CONFIG[23:16] OUT_FRAC_BITS: Fraction bits of OUT_R, OUT_G, OUT_B (signed) */
 #define SPECULAR_CONFIG_OUT_FRAC_BITS_SHIFT     16u
 #define SPECULAR_CONFIG_OUT_FRAC_BITS_WIDTH     8u
 #define SPECULAR_CONFIG_OUT_FRAC_BITS_MASK      0x00FF0000u
 #define SPECULAR_CONFIG_OUT_FRAC_BITS_ACCESS    SPECULAR_ACCESS_RO
-/* CONFIG[31:24] RGB_BITS: width of R, G, B: the largest is (1 << W) - 1 */
+/* CONFIG[31:24] RGB_BITS: Width of R, G, B: the largest is (1 << W) - 1 */
 #define SPECULAR_CONFIG_RGB_BITS_SHIFT          24u
 #define SPECULAR_CONFIG_RGB_BITS_WIDTH          8u
 #define SPECULAR_CONFIG_RGB_BITS_MASK           0xFF000000u
@@ -114,22 +124,22 @@
 #define SPECULAR_STATUS_OFFSET                  0x000Cu
 #define SPECULAR_STATUS_ACCESS                  SPECULAR_ACCESS_W1C
 #define SPECULAR_STATUS_RESET                   0x00000000u
-/* STATUS[0] BUSY: an operation is in flight (the pin model only; lt, rtl and rtl-sync finish inside the access) */
+/* STATUS[0] BUSY: An operation is in flight (the pin model only; lt, rtl and rtl-sync finish inside the access) */
 #define SPECULAR_STATUS_BUSY_SHIFT              0u
 #define SPECULAR_STATUS_BUSY_WIDTH              1u
 #define SPECULAR_STATUS_BUSY_MASK               0x00000001u
 #define SPECULAR_STATUS_BUSY_ACCESS             SPECULAR_ACCESS_RO
-/* STATUS[1] DONE: results valid; write 1 to clear; drives done_irq */
+/* STATUS[1] DONE: Results valid; drives done_irq; write 1 to clear */
 #define SPECULAR_STATUS_DONE_SHIFT              1u
 #define SPECULAR_STATUS_DONE_WIDTH              1u
 #define SPECULAR_STATUS_DONE_MASK               0x00000002u
 #define SPECULAR_STATUS_DONE_ACCESS             SPECULAR_ACCESS_W1C
-/* STATUS[2] ERROR: an access was refused; write 1 to clear (clears CAUSE and ERROR_ADDRESS too) */
+/* STATUS[2] ERROR: An access was refused; write 1 to clear (clears CAUSE and ERROR_ADDRESS too) */
 #define SPECULAR_STATUS_ERROR_SHIFT             2u
 #define SPECULAR_STATUS_ERROR_WIDTH             1u
 #define SPECULAR_STATUS_ERROR_MASK              0x00000004u
 #define SPECULAR_STATUS_ERROR_ACCESS            SPECULAR_ACCESS_W1C
-/* STATUS[15:8] CAUSE: why the last access was refused (ErrorCause) */
+/* STATUS[15:8] CAUSE: Why the last access was refused (ErrorCause) */
 #define SPECULAR_STATUS_CAUSE_SHIFT             8u
 #define SPECULAR_STATUS_CAUSE_WIDTH             8u
 #define SPECULAR_STATUS_CAUSE_MASK              0x0000FF00u
@@ -153,7 +163,7 @@
 #define SPECULAR_CONTROL_OFFSET                 0x0010u
 #define SPECULAR_CONTROL_ACCESS                 SPECULAR_ACCESS_WSC
 #define SPECULAR_CONTROL_RESET                  0x00000000u
-/* CONTROL[0] START: run one operation on COS, N, R, G, B; reads 0; any other bit is refused */
+/* CONTROL[0] START: Write 1: run one operation on COS, N, R, G, B; reads 0; any other bit is refused */
 #define SPECULAR_CONTROL_START_SHIFT            0u
 #define SPECULAR_CONTROL_START_WIDTH            1u
 #define SPECULAR_CONTROL_START_MASK             0x00000001u

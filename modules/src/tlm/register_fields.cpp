@@ -2,6 +2,8 @@
 
 #include <cctype>
 
+#include "specular/format.h"
+
 namespace specular {
 
 namespace {
@@ -15,30 +17,38 @@ std::string identifier(const char* name) {
   return id;
 }
 
+/// A policy's value: its name says all (no description).
 template <typename Enum>
-FieldValue value_of(Enum value, std::string description = "") {
-  return {identifier(to_string(value)), static_cast<std::uint32_t>(value), std::move(description)};
+FieldValue policy_value(std::uint32_t code) {
+  return {identifier(to_string(static_cast<Enum>(code))), code, ""};
 }
 }  // namespace
 
+std::vector<FieldInfo> fields_of(Reg reg) {
+  std::vector<FieldInfo> fields;
+  for (const FieldInfo& f : register_fields)
+    if (f.reg == reg) fields.push_back(f);
+  if (fields.empty()) {
+    const RegisterInfo& row = info(reg);
+    fields.push_back({reg, "VALUE", 0, 32, row.access, FieldValues::none, row.description});
+  }
+  return fields;
+}
+
 std::vector<FieldValue> field_values(FieldValues values) {
   std::vector<FieldValue> list;
-  switch (values) {
-    case FieldValues::none: break;
-    case FieldValues::error_cause:
-      for (std::uint8_t c = 0; c < error_cause_count; ++c)
-        list.push_back(value_of(static_cast<ErrorCause>(c), describe(static_cast<ErrorCause>(c))));
-      break;
-    case FieldValues::normalisation:
-      for (Normalisation policy : every_normalisation) list.push_back(value_of(policy));
-      break;
-    case FieldValues::saturation:
-      for (Saturation policy : {Saturation::clamp, Saturation::literal})
-        list.push_back(value_of(policy));
-      break;
-    case FieldValues::constants:
-      for (Constants policy : every_constants) list.push_back(value_of(policy));
-      break;
+  for (std::uint32_t code = 0; code < value_count(values); ++code) {
+    switch (values) {
+      case FieldValues::none: break;
+      case FieldValues::error_cause: {
+        const ErrorCause cause = static_cast<ErrorCause>(code);
+        list.push_back({identifier(to_string(cause)), code, describe(cause)});
+        break;
+      }
+      case FieldValues::normalisation: list.push_back(policy_value<Normalisation>(code)); break;
+      case FieldValues::saturation: list.push_back(policy_value<Saturation>(code)); break;
+      case FieldValues::constants: list.push_back(policy_value<Constants>(code)); break;
+    }
   }
   return list;
 }

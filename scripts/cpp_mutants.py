@@ -35,7 +35,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SRC = os.path.join(ROOT, "modules", "src")
 # The mutated files and the test executables that exercise them (their quick tests).
 CORE_TESTS = ["test_arith_accuracy", "test_arith_bus", "test_constants", "test_block_rom5",
-              "test_block_rom38", "test_core_kernel_free", "test_device_policies"]
+              "test_block_rom38", "test_core_kernel_free", "test_device_policies", "test_format_inputs"]
 CONTROL_TESTS = ["test_control_protocol", "test_control_timing", "test_block_dff", "test_block_gates",
                  "test_power_on_reset"]
 TLM_TESTS = ["test_tlm_registers", "test_tlm_legal_use", "test_misuse_tlm", "test_tlm_timing", "test_tlm_idle"]
@@ -198,7 +198,29 @@ def build_targets(build, targets, log):
     return r.returncode == 0
 
 
+def run_in_copy(args):
+    """The farm's way: the commit copied into DIR/src (git archive), configured and built in
+    DIR/build (Release, ccache when present), then this script of the copy mutates the copy."""
+    copy = os.path.abspath(args.copy)
+    src, build = os.path.join(copy, "src"), os.path.join(copy, "build")
+    os.makedirs(src, exist_ok=True)
+    archive = subprocess.run(["git", "-C", ROOT, "archive", "HEAD"], capture_output=True, check=True).stdout
+    subprocess.run(["tar", "-x", "-C", src], input=archive, check=True)
+    launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DCMAKE_C_COMPILER_LAUNCHER=ccache"] \
+        if subprocess.run(["sh", "-c", "command -v ccache"], capture_output=True).returncode == 0 else []
+    subprocess.run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release"] + launcher,
+                   check=True, stdout=subprocess.DEVNULL)
+    argv = [a for a in sys.argv[1:]]
+    k = argv.index("--copy")
+    del argv[k:k + 2]
+    # the partial is written where the task asked for it, with the commit of this tree
+    return subprocess.run([sys.executable, os.path.join(src, "scripts", "cpp_mutants.py")] + argv +
+                          ["--build", build, "--commit", commit()]).returncode
+
+
 def run(args):
+    if args.copy:
+        return run_in_copy(args)
     mutants = all_mutants()
     build = os.path.abspath(args.build)
     if args.ids:
@@ -260,7 +282,7 @@ def run(args):
     finally:
         restore()
         build_targets(build, all_targets, log)  # the unmutated objects back (ccache)
-    partial = {"kind": "cpp_mutants", "version": 1, "commit": commit(),
+    partial = {"kind": "cpp_mutants", "version": 1, "commit": args.commit or commit(),
                "settings": {"sample": args.sample, "seed": args.seed, "ids": args.ids,
                             "mutants_in_tree": len(mutants)},
                "shard": {"index": index, "count": count}, "results": results}
@@ -339,6 +361,8 @@ def merge(args):
 
 
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--merge":  # farm.sh's merge convention
+        sys.argv[1] = "merge"
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("list")
@@ -353,6 +377,8 @@ def main():
     r.add_argument("--jobs", type=int, default=2)
     r.add_argument("--goal", type=float, default=0.90)
     r.add_argument("--build", default=os.path.join(ROOT, "build"))
+    r.add_argument("--commit", help=argparse.SUPPRESS)
+    r.add_argument("--copy", help="copy this commit into DIR/src, build it in DIR/build and mutate the copy (farm)")
     m = sub.add_parser("merge")
     m.add_argument("partials", nargs="+")
     m.add_argument("--goal", type=float, default=0.90)

@@ -38,7 +38,8 @@ CORE_TESTS = ["test_arith_accuracy", "test_arith_bus", "test_constants", "test_b
               "test_block_rom38", "test_core_kernel_free", "test_device_policies", "test_format_inputs"]
 CONTROL_TESTS = ["test_control_protocol", "test_control_timing", "test_block_dff", "test_block_gates",
                  "test_power_on_reset"]
-TLM_TESTS = ["test_tlm_registers", "test_tlm_legal_use", "test_misuse_tlm", "test_tlm_timing", "test_tlm_idle"]
+TLM_TESTS = ["test_tlm_registers", "test_tlm_legal_use", "test_misuse_tlm", "test_tlm_timing", "test_tlm_idle",
+             "test_tlm_integration", "test_tlm_operand_burst", "test_tlm_strict_delay", "test_tlm_rtl"]
 FILES = [("arith.cpp", CORE_TESTS), ("core.cpp", CORE_TESTS),
          ("control/control_unit16.cpp", CONTROL_TESTS), ("control/d_flip_flop.cpp", CONTROL_TESTS),
          ("control/gates.cpp", CONTROL_TESTS), ("tlm/target.cpp", TLM_TESTS)]

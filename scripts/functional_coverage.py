@@ -49,6 +49,8 @@ def main():
                     return 2
                 hits[name] += int(count)
     required = [b for b in bins if not b[2]]
+    # A bin declared impossible that was hit: its reason is wrong (fix the declaration).
+    wrongly_ignored = [b for b in bins if b[2] and hits[b[0]] > 0]
     unhit = [b for b in required if hits[b[0]] == 0]
     lines = ["# Functional coverage", "",
              "%d bins (%d can be hit, %d ignored with a reason), %d hit, %d unhit; %d hit files." %
@@ -70,7 +72,9 @@ def main():
     print(lines[4])
     for name, what, _ in unhit:
         print("unhit: %s (%s)" % (name, what), file=sys.stderr)
-    return 1 if unhit else 0
+    for name, _, ignore in wrongly_ignored:
+        print("hit although declared impossible ('%s'): %s" % (ignore, name), file=sys.stderr)
+    return 1 if unhit or wrongly_ignored else 0
 
 
 if __name__ == "__main__":

@@ -69,7 +69,9 @@ TEST(FunctionalCoverage, DISABLED_RecordsThreeHits) {
   Config config;
   config.saturation = Saturation::literal;
   coverage::record_policy(config);
-  if (coverage::enabled()) EXPECT_THROW(coverage::hit("cos/no_such_bin"), std::logic_error);
+  if (coverage::enabled()) {
+    EXPECT_THROW(coverage::hit("cos/no_such_bin"), std::logic_error);
+  }
 }
 
 TEST(FunctionalCoverage, AProcessWritesExactlyItsHitsAndNothingWhenOff) {

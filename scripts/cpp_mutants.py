@@ -224,6 +224,8 @@ def run(args):
         return run_in_copy(args)
     mutants = all_mutants()
     build = os.path.abspath(args.build)
+    if args.files:  # a stratum: only the mutants of files whose path starts so
+        mutants = [m for m in mutants if m["file"].startswith(args.files)]
     if args.ids:
         chosen = [m for m in mutants if m["id"] in args.ids]
     elif args.sample:
@@ -284,7 +286,7 @@ def run(args):
         restore()
         build_targets(build, all_targets, log)  # the unmutated objects back (ccache)
     partial = {"kind": "cpp_mutants", "version": 1, "commit": args.commit or commit(),
-               "settings": {"sample": args.sample, "seed": args.seed, "ids": args.ids,
+               "settings": {"sample": args.sample, "seed": args.seed, "ids": args.ids, "files": args.files,
                             "mutants_in_tree": len(mutants)},
                "shard": {"index": index, "count": count}, "results": results}
     if args.partial:
@@ -371,6 +373,7 @@ def main():
     r.add_argument("--sample", type=int, default=0, help="a seeded random sample of K mutants (0: all)")
     r.add_argument("--seed", type=int, default=37)
     r.add_argument("--ids", type=lambda t: [int(x) for x in t.split(",")])
+    r.add_argument("--files", help="only the mutants of files whose path starts with this (a stratum)")
     r.add_argument("--shard")
     r.add_argument("--partial")
     r.add_argument("--log")

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # farm.sh: a named regression as independent tasks on a batch farm (issue 25).
 #
-#   scripts/farm.sh submit REGRESSION [options]   REGRESSION: smoke (minutes) or full
+#   scripts/farm.sh submit REGRESSION [options]   REGRESSION: smoke (minutes), full, coverage
+#                                                 or mutants (issue 37, docs/testing.md)
 #   scripts/farm.sh wait DIR                      wait for a Slurm submission's merge
 #   scripts/farm.sh resubmit DIR [options]        run again only the tasks that failed
 #   scripts/farm.sh task DIR ID                   one task (what each array task runs)
@@ -110,7 +111,14 @@ regression_tasks() {
       # The numerical study (testbench/study/specular_study): its stages as tasks.
       emit_group study study 6 --workers 1
       ;;
-    *) die "unknown regression '$1' (allowed: smoke, full)" ;;
+    coverage)  # issue 37: the quick suite under gcov in 8 slices of one coverage build
+      emit_group coverage coverage 8 ;;
+    mutants)  # issue 37: Yosys mutants of the three RTL targets, every C++ mutant
+      emit_group rtl_mutants_specular_device rtl_mutants 8 --target specular_device --count 200 --seed 1
+      emit_group rtl_mutants_specular_device_sync rtl_mutants 8 --target specular_device_sync --count 200 --seed 1
+      emit_group rtl_mutants_control_unit16 rtl_mutants 2 --target control_unit16 --count 100 --seed 1
+      emit_group cpp_mutants cpp_mutants 40 --copy @WORK@ ;;
+    *) die "unknown regression '$1' (allowed: smoke, full, coverage, mutants)" ;;
   esac
 }
 
@@ -165,6 +173,12 @@ run_task() {  # run_task DIR ID
              rm -rf "$dir/work/$id" ;;
     study) tool=("$build_dir/testbench/study/specular_study" --quiet --out "$dir/work/$id")
            rm -rf "$dir/work/$id" ;;
+    # issue 37: coverage slices of the build made at submission; mutants
+    coverage) tool=(bash "$root/scripts/coverage.sh" run --build "$dir/build-coverage") ;;
+    rtl_mutants) tool=(python3 "$root/scripts/rtl_mutants.py" run --build "$build_dir" --out "$dir/work/$id")
+                 rm -rf "$dir/work/$id"; mkdir -p "$dir/work/$id" ;;
+    cpp_mutants) tool=(python3 "$root/scripts/cpp_mutants.py" run)
+                 args=${args//@WORK@/$dir/work/$id}; rm -rf "$dir/work/$id" ;;
   esac
   # shellcheck disable=SC2086  # the arguments are words of our own task list
   /usr/bin/time -f '%e %U %S' -o "$dir/status/$id.time" \
@@ -209,6 +223,9 @@ run_merge() {  # run_merge DIR
                [[ $group != *_hazards ]] || extra+=(--output "$dir/merged/$group") ;;
       study) tool=("$build_dir/testbench/study/specular_study")
              extra=(--out "$dir/merged/$group") ;;
+      coverage) tool=(bash "$root/scripts/coverage.sh") extra=(--out "$dir/merged/$group")
+                extra+=(--build "$dir/build-coverage") ;;
+      rtl_mutants|cpp_mutants) tool=(python3 "$root/scripts/$kind.py") ;;
     esac
     if "${tool[@]}" --merge "${files[@]}" "${extra[@]}" \
         >"$dir/merged/$group.txt" 2>"$dir/merged/$group.err"; then
@@ -318,7 +335,7 @@ case "$command" in
   submit)
     (($# >= 2)) || die "usage: farm.sh submit REGRESSION [options]"
     regression=$2
-    [[ $regression == smoke || $regression == full ]] || die "unknown regression '$regression' (allowed: smoke, full)"
+    [[ $regression =~ ^(smoke|full|coverage|mutants)$ ]] || die "unknown regression '$regression' (allowed: smoke, full, coverage, mutants)"
     shift 2
     parse_options "$@"
     [[ -x $build/testbench/specular_tb && -x $build/testbench/specular_prove ]] ||
@@ -344,6 +361,12 @@ case "$command" in
             >"$out_dir/logs/netlist-$top.log" 2>&1 || die "silicon.sh failed for $top: see $out_dir/logs/netlist-$top.log"
         fi
       done
+    fi
+    if cut -f3 "$out_dir/tasks.tsv" | grep -qx coverage; then
+      # The coverage slices share one build (--coverage), made here once (issue 37).
+      echo "farm.sh: building the coverage build (scripts/coverage.sh build)" >&2
+      bash "$root/scripts/coverage.sh" build --build "$out_dir/build-coverage" >"$out_dir/logs/build-coverage.log" 2>&1 ||
+        die "coverage.sh build failed: see $out_dir/logs/build-coverage.log"
     fi
     mapfile -t ids < <(cut -f1 "$out_dir/tasks.tsv")
     echo "farm.sh: regression $regression, ${#ids[@]} tasks, folder $out_dir" >&2

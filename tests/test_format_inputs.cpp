@@ -132,6 +132,9 @@ TEST(FormatInputs, CoreRunRefusesCodesOffTheirBuses) {
   EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(in); },
                                                {"register 10 (R)", "256", "U8.0", "0 to 255"}));
   in = good;
+  in.rgb[1] = 256;  // G alone: each register's own check names it (a mutant checked B twice)
+  EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(in); }, {"register 11 (G)", "256"}));
+  in = good;
   in.rgb[2] = -1;
   EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(in); }, {"register 12 (B)", "-1"}));
   in = good;

@@ -387,6 +387,25 @@ TEST_P(Integration, InterruptWorksUnboundThroughItsCallback) {
   EXPECT_EQ(top->edges[1].first, top->acknowledged);
 }
 
+// After a batch of several operations, OUT_R/G/B hold the last operation's results (the
+// registers of a single operation), computed here by the core: a C++ mutant that took
+// another operation's results survived every other test (issue 37).
+TEST_P(Integration, ResultRegistersHoldTheLastOperationOfABatch) {
+  run({GetParam()}, [](TlmBench& b) {
+    Endpoint& e = b.at(0);
+    ASSERT_EQ(e.write(Reg::n, 3), tlm::TLM_OK_RESPONSE);
+    ASSERT_EQ(e.write(Reg::r, 250), tlm::TLM_OK_RESPONSE);
+    ASSERT_EQ(e.write(Reg::g, 120), tlm::TLM_OK_RESPONSE);
+    ASSERT_EQ(e.write(Reg::b, 9), tlm::TLM_OK_RESPONSE);
+    std::uint32_t cos[3] = {65536, 20000, 50000};
+    ASSERT_EQ(raw(e, tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), cos, 12, 12), tlm::TLM_OK_RESPONSE);
+    const Result last = Core().run({50000, 3, {250, 120, 9}});
+    EXPECT_EQ(static_cast<std::int32_t>(e.read(Reg::out_r)), last.out[0]);
+    EXPECT_EQ(static_cast<std::int32_t>(e.read(Reg::out_g)), last.out[1]);
+    EXPECT_EQ(static_cast<std::int32_t>(e.read(Reg::out_b)), last.out[2]);
+  });
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryTarget, Integration,
                          testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync), kind_name);
 

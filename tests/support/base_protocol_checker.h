@@ -29,6 +29,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/simple_target_socket.h>
 
+#include "functional_coverage.h"
 #include "specular/systemc.h"
 
 namespace specular {
@@ -123,7 +124,17 @@ class BaseProtocolChecker : public sc_core::sc_module {
     if (request_open_ == tx) request_open_ = nullptr;
   }
 
+  // Functional coverage (issue 37): every completed access, as the target answered it.
+  static void cover(const tlm::tlm_generic_payload& tx, testing_support::coverage::Transport transport,
+                    bool legal_override = false) {
+    if (!testing_support::coverage::enabled() || tx.is_read() == tx.is_write()) return;
+    testing_support::coverage::record_access(
+        tx.get_address(), tx.is_write(), tx.get_data_length(),
+        legal_override || tx.get_response_status() == tlm::TLM_OK_RESPONSE, transport, tx.get_data_ptr());
+  }
+
   void finish(tlm::tlm_generic_payload& tx) {
+    cover(tx, testing_support::coverage::Transport::nb);
     close_request(&tx);
     if (response_open_ == &tx) response_open_ = nullptr;
     in_flight_.erase(&tx);
@@ -136,6 +147,7 @@ class BaseProtocolChecker : public sc_core::sc_module {
     const Snapshot before = snapshot_of(tx);
     const sc_core::sc_time due = sc_core::sc_time_stamp() + delay;
     initiator_socket->b_transport(tx, delay);
+    cover(tx, testing_support::coverage::Transport::b);
     check_unchanged(tx, before, "b_transport");
     check_status_set(tx, "b_transport returned");
     if (sc_core::sc_time_stamp() + delay < due)
@@ -234,6 +246,9 @@ class BaseProtocolChecker : public sc_core::sc_module {
     ++dbg_calls;
     const unsigned length = tx.get_data_length();
     const unsigned done = initiator_socket->transport_dbg(tx);
+    if (testing_support::coverage::enabled() && (tx.is_read() || tx.is_write()))
+      testing_support::coverage::record_access(tx.get_address(), tx.is_write(), length, done == length && length > 0,
+                                               testing_support::coverage::Transport::dbg, tx.get_data_ptr());
     if (done > length) breach(tx, "transport_dbg returned more bytes than asked for");
     return done;
   }

@@ -3,6 +3,8 @@
 // and calls sc_start: once per test process.
 #pragma once
 
+#include "functional_coverage.h"
+
 #include <vector>
 
 #include "specular/pin_harness.h"
@@ -37,6 +39,8 @@ class PinDriver : public sc_core::sc_module {
 
 inline PinRun run_on_pins(const Config& config, const sc_core::sc_time& period,
                           const std::vector<Operands>& ops) {
+  coverage::record_policy(config);  // functional coverage (issue 37): off unless asked
+  for (const Operands& op : ops) coverage::record_operation(op, config.widths.cos_frac_bits);
   PinHarness harness("harness", config, period);
   PinDriver driver("driver", harness, ops);
   sc_core::sc_start();

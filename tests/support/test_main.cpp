@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "functional_coverage.h"
 #include "operation_shard.h"
 
 int sc_main(int, char**) { return RUN_ALL_TESTS(); }
@@ -67,6 +68,12 @@ int take_over_gtest_sharding() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Every functional coverage bin, for scripts/functional_coverage.py (issue 37).
+  if (argc == 2 && std::string(argv[1]) == "--specular-list-functional-bins") {
+    for (const auto& bin : specular::testing_support::coverage::all_bins())
+      std::cout << bin.name << '\t' << bin.what << '\t' << bin.ignore << '\n';
+    return 0;
+  }
   // The banner would mix into --gtest_list_tests, which ctest parses.
   setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
   testing::InitGoogleTest(&argc, argv);

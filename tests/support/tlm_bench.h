@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <memory>
 #include <string>
@@ -16,6 +17,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
+#include "functional_coverage.h"
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
@@ -40,6 +42,7 @@ class Endpoint : public sc_core::sc_module {
   Endpoint(sc_core::sc_module_name name, Kind kind, const Config& config, const sc_time& period)
       : sc_module(name), kind(kind), driver(socket, 0, keeper) {
     SPECULAR_HAS_PROCESS(Endpoint);
+    testing_support::coverage::record_policy(config);  // functional coverage (issue 37)
     if (kind == Kind::lt)
       target = std::make_unique<SpecularLtTarget>("target", config, period);
     else if (kind == Kind::pin)
@@ -82,6 +85,7 @@ class Endpoint : public sc_core::sc_module {
     tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     sc_time delay = sc_core::SC_ZERO_TIME;
     socket->b_transport(tx, delay);
+    cover(tx, testing_support::coverage::Transport::b);
     if (annotated != nullptr) *annotated = delay;
     wait(delay);
     return tx.get_response_status();
@@ -105,11 +109,38 @@ class Endpoint : public sc_core::sc_module {
     tx.set_address(address);
     tx.set_data_ptr(static_cast<unsigned char*>(data));
     tx.set_data_length(length);
-    return socket->transport_dbg(tx);
+    const unsigned done = socket->transport_dbg(tx);
+    if (testing_support::coverage::enabled() && command != tlm::TLM_IGNORE_COMMAND)
+      testing_support::coverage::record_access(address, command == tlm::TLM_WRITE_COMMAND, length,
+                                               done == length && length > 0,
+                                               testing_support::coverage::Transport::dbg,
+                                               static_cast<unsigned char*>(data));
+    return done;
   }
 
  private:
   void on_irq() { irq_edges.emplace_back(sc_core::sc_time_stamp(), irq.read()); }
+  // Functional coverage (issue 37): the access, and the done interrupt's order: raised,
+  // then STATUS.done cleared (acknowledged) before the next START or a START while it
+  // is still raised. The bench binds done_irq, so the interrupt is always enabled here.
+  void cover(const tlm::tlm_generic_payload& tx, testing_support::coverage::Transport transport) {
+    namespace cov = testing_support::coverage;
+    if (!cov::enabled() || tx.is_read() == tx.is_write()) return;
+    const bool legal = tx.get_response_status() == tlm::TLM_OK_RESPONSE;
+    cov::record_access(tx.get_address(), tx.is_write(), tx.get_data_length(), legal, transport,
+                       tx.get_data_ptr());
+    if (!legal || !tx.is_write() || tx.get_data_length() != 4) return;
+    std::uint32_t value = 0;
+    std::memcpy(&value, tx.get_data_ptr(), 4);
+    if (tx.get_address() == offset_of(Reg::status) && (value & status_bits::done) && irq_seen_) {
+      cov::record_interrupt(true, true);
+      irq_seen_ = false;
+    } else if (tx.get_address() == offset_of(Reg::control) && (value & control_bits::start)) {
+      if (irq_seen_ && irq.read()) cov::record_interrupt(true, false);
+      irq_seen_ = irq.read();
+    }
+  }
+  bool irq_seen_ = false;
 };
 
 /// The top: endpoints and up to two scenario threads; stops the kernel when both end.

@@ -98,7 +98,9 @@ fi
 
 # ---- the vectors and the result strobe of the top -----------------------------------
 source "$top_dir/gatesim.conf"
-vec_opts=(--groups "$groups" --random "${random:-200}")
+# device tops: no operation aborted by reset (their testbench's RESET_EVERY), so that
+# every operation of the stream is a result, as in a variant's testbench
+vec_opts=(--groups "$groups" --random "${random:-200}" --tb-param RESET_EVERY=1000000)
 strobe=(--results-strobe pin35_done --results-mode rise)
 if [[ $variant -eq 1 ]]; then
   vec_opts=(--random "${random:-262}")

@@ -48,6 +48,8 @@
 #   --zero-delay        no SDF, no cell delays (-gspecify off), ROM macros without their
 #                       access time: the zero-delay replay of the same netlist, whose
 #                       toggles the glitch share is measured against (scripts/energy.sh)
+#   --tb-param NAME=V   one more testbench parameter after the top's (energy.sh:
+#                       RESET_EVERY=1000000, no operation aborted by reset)
 #   --quiet             no progress lines (drawn on standard error only when it is a
 #                       terminal: periods tried or policies' vectors run, the total,
 #                       rate and time left, by specular_progress beside specular_tb)
@@ -94,6 +96,7 @@ groups_set=0
 quiet=0
 vcd=""
 zero_delay=0
+tb_params_extra=()
 shard_index=0
 shard_count=1
 partial=""
@@ -103,7 +106,7 @@ while [[ $# -gt 0 ]]; do
     -h|--help) usage; exit 0 ;;
     --quiet) quiet=1; shift ;;
     --zero-delay) zero_delay=1; shift ;;
-    --top|--vcd|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool)
+    --top|--vcd|--tb-param|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --policies) policies="$2" ;;
@@ -112,6 +115,8 @@ while [[ $# -gt 0 ]]; do
         --vectors-tool) vectors_tool="$2" ;;
         --partial) partial="$2" ;;
         --vcd) vcd="$2" ;;
+        --tb-param) [[ "$2" =~ ^[A-Z_][A-Z0-9_]*=[0-9.]+$ ]] || fail_args "--tb-param '$2': expected NAME=NUMBER"
+                    tb_params_extra+=("$2") ;;
         --shard)
           [[ "$2" =~ ^([0-9]{1,4})/([0-9]{1,4})$ ]] && (( BASH_REMATCH[2] >= 1 && BASH_REMATCH[2] <= 1000 \
             && 10#${BASH_REMATCH[1]} < 10#${BASH_REMATCH[2]} )) \
@@ -165,6 +170,7 @@ TB_DEFINES=()
 VARIANT_VECTORS=0
 # shellcheck source=/dev/null
 source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS, TB_DEFINES, VARIANT_VECTORS (per top)
+TB_PARAMS+=("${tb_params_extra[@]}")
 if [[ $VARIANT_VECTORS -eq 1 ]]; then
   [[ -x "$vectors_tool" ]] || fail_args "specular_variant_vectors not found at '$vectors_tool' (cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)"
   [[ $random_set -eq 1 ]] || random=10

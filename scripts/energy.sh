@@ -101,9 +101,11 @@ source "$top_dir/gatesim.conf"
 # device tops: no operation aborted by reset (their testbench's RESET_EVERY), so that
 # every operation of the stream is a result, as in a variant's testbench
 vec_opts=(--groups "$groups" --random "${random:-200}" --tb-param RESET_EVERY=1000000)
+random_from=$((10 * groups))
 strobe=(--results-strobe pin35_done --results-mode rise)
 if [[ $variant -eq 1 ]]; then
   vec_opts=(--random "${random:-262}")
+  random_from=18
   strobe=(--results-strobe valid --results-mode clk_valid --clock clk)
   [[ -n "$cpr" ]] || cpr=1
 else
@@ -150,6 +152,6 @@ for mode in "${modes[@]}"; do
   [[ $keep_vcd -eq 1 ]] || rm -f "$out/$mode/activity.vcd"
 done
 /usr/bin/python3 "$here/silicon/energy.py" report --top "$top" --dir "$out" --period "$period" \
-  ${t_sim:+--t-sim "$t_sim"} --clocks-per-result "$cpr" \
+  ${t_sim:+--t-sim "$t_sim"} --clocks-per-result "$cpr" --random-from "$random_from" \
   || { echo "energy.sh: the report failed" >&2; exit 1; }
 echo "energy.sh: $out/energy.md, $out/energy.json"

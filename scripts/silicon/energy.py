@@ -830,6 +830,30 @@ def report(args):
     half = [e / r / final - 1 for t, r, e in cps[len(cps) // 2:]]
     out["convergence"] = conv
     out["convergence_max_dev_second_half"] = max(abs(x) for x in half)
+    # The random operands after the edge cases (the first RANDOM_FROM results): their mean
+    # per result, its spread and standard error, and how the running mean settles.
+    k0 = min(args.random_from, len(cps) - 1)
+    base = cps[k0 - 1][2] if k0 > 0 else 0.0
+    inc = [cps[k][2] - (cps[k - 1][2] if k > 0 else 0.0) for k in range(k0, len(cps))]
+    if len(inc) >= 4:
+        m = sum(inc) / len(inc)
+        sd = (sum((x - m) ** 2 for x in inc) / (len(inc) - 1)) ** 0.5
+        run = []
+        acc = 0.0
+        for j, x in enumerate(inc, 1):
+            acc += x
+            run.append(acc / j)
+        scale = (logic + rom) / final  # the exact energy / the running figure's weights
+        out["random_from"] = k0
+        out["random_results"] = len(inc)
+        out["random_dynamic_pj"] = m * scale
+        out["random_dynamic_sd_pj"] = sd * scale
+        out["random_dynamic_sem_rel"] = sd / m / len(inc) ** 0.5
+        out["random_running_max_dev_second_half"] = max(abs(x / m - 1) for x in run[len(run) // 2:])
+        out["random_results_for_1pct_sem"] = int((sd / m / 0.01) ** 2) + 1
+        out["random_running"] = [{"results": j, "pj_per_result": run[j - 1] * scale}
+                                 for j in sorted({max(1, len(run) // 8), len(run) // 4, len(run) // 2,
+                                                  3 * len(run) // 4, len(run)})]
     json.dump(out, open(f"{d}/energy.json", "w"), indent=1)
     f = lambda x: f"{x:.1f}"
     lines = [f"# Energy per result: {args.top}", "",
@@ -856,6 +880,16 @@ def report(args):
     lines += [f"| {c['results']} | {c['pj_per_result']:.1f} | {100 * c['vs_final']:+.2f} % |" for c in conv]
     lines += ["", f"Largest deviation over the second half of the run: "
               f"{100 * out['convergence_max_dev_second_half']:.2f} %.", ""]
+    if "random_results" in out:
+        lines += [f"The random operands (results {out['random_from'] + 1} to {n}, after the edge cases): "
+                  f"{out['random_dynamic_pj']:.1f} pJ per result (logic + ROM), standard deviation "
+                  f"{out['random_dynamic_sd_pj']:.1f} pJ, standard error of the mean "
+                  f"{100 * out['random_dynamic_sem_rel']:.2f} %; the running mean stays within "
+                  f"{100 * out['random_running_max_dev_second_half']:.2f} % of it over the second half; "
+                  f"a 1 % standard error needs {out['random_results_for_1pct_sem']} random results.", "",
+                  "| random results | pJ / result (running mean) |", "|---:|---:|"]
+        lines += [f"| {r['results']} | {r['pj_per_result']:.1f} |" for r in out["random_running"]]
+        lines.append("")
     open(f"{d}/energy.md", "w").write("\n".join(lines))
     return 0
 
@@ -892,6 +926,8 @@ def main():
     r.add_argument("--period", type=float, required=True)
     r.add_argument("--t-sim", type=float)
     r.add_argument("--clocks-per-result", type=float, required=True)
+    r.add_argument("--random-from", type=int, default=0,
+                   help="results before the random operands (edge cases): 10 x groups, or 18")
     args = ap.parse_args()
     return {"dumper": dumper, "compute": compute, "sta-slews": sta_slews,
             "report": report}[args.cmd](args)

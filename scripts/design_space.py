@@ -130,23 +130,28 @@ def energy_table(designs, front_error, front_area):
     lines = ["| design | total (mm²) | die est. (mm²) | lobe max \\|err\\| | clocks / result | "
              "logic internal (pJ) | switching (pJ) | ROM reads (pJ) | ROM reads / result | "
              "leakage at 50 ns (pJ) | **total at 50 ns (pJ)** | T_sim (ns) | total at T_sim (pJ) | "
+             "random operands only (pJ, ± s.e.) | "
              "zero-delay logic (pJ) | glitches: share of the logic energy | share of the toggles | "
              "results replayed | Pareto |",
-             "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+             "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
     for i, d in enumerate(designs):
         g = d["energy"]
         if g is None:
             continue
         s, e = d["summary"], d["error"] or {}
-        reads = ", ".join(f"{v:.2f}" for k, v in sorted(g["rom_reads_per_result"].items()))
+        short = lambda k: k.split(".genblk1")[0].rsplit("/", 1)[0] if "/" in k else k
+        reads = ", ".join(f"{short(k)} {v:.2f}" for k, v in sorted(g["rom_reads_per_result"].items()))
         marks = [m for m, f in (("energy–error", front_error), ("energy–area", front_area)) if i in f]
         pct = lambda k: f"{100 * g[k]:.0f} %" if g.get(k) is not None else "—"
+        rnd = (f"{g['random_dynamic_pj'] + g['leakage_pj_at_period']:.0f} ± "
+               f"{100 * g['random_dynamic_sem_rel']:.1f} % ({g['random_results']})"
+               if g.get("random_results") else "—")
         lines.append(
             f"| {d['label']} | {s['area_total_um2'] / 1e6:.3f} | {s['die_area_estimate_mm2']:.3f} | "
             f"{sci(e.get('lobe_max_abs'))} | {num(g['clocks_per_result'])} | {g['internal_pj']:.0f} | "
             f"{g['switching_pj']:.0f} | {g['rom_pj']:.0f} | {reads} | {g['leakage_pj_at_period']:.2f} | "
             f"**{g['total_pj_at_period']:.0f}** | {num(g.get('t_sim_ns'), 1)} | "
-            f"{num(g.get('total_pj_at_t_sim'), 0)} | {num(g.get('zero_delay_logic_pj'), 0)} | "
+            f"{num(g.get('total_pj_at_t_sim'), 0)} | {rnd} | {num(g.get('zero_delay_logic_pj'), 0)} | "
             f"{pct('glitch_logic_energy_share')} | {pct('glitch_toggle_share')} | {g['results']} | "
             f"{', '.join(marks)} |")
     return "\n".join(lines) + "\n"

@@ -97,16 +97,17 @@ if [[ -z "$cpr" && -f "$summary" ]]; then
 fi
 
 # ---- the vectors and the result strobe of the top -----------------------------------
-source "$top_dir/gatesim.conf"
 # device tops: no operation aborted by reset (their testbench's RESET_EVERY), so that
 # every operation of the stream is a result, as in a variant's testbench
 vec_opts=(--groups "$groups" --random "${random:-200}" --tb-param RESET_EVERY=1000000)
 random_from=$((10 * groups))
-strobe=(--results-strobe pin35_done --results-mode rise)
+ENERGY_RESULTS=()
+source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top)
+[[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)"
+strobe=("${ENERGY_RESULTS[@]}")
 if [[ $variant -eq 1 ]]; then
   vec_opts=(--random "${random:-262}")
   random_from=18
-  strobe=(--results-strobe valid --results-mode clk_valid --clock clk)
   [[ -n "$cpr" ]] || cpr=1
 else
   [[ -n "$cpr" ]] || cpr=2

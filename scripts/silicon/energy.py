@@ -28,7 +28,7 @@ this file keeps: rise_power per rising output transition, fall_power per falling
       and every non-cell instance below it, one level each) into VCD_FILE.
   energy.py compute --lib LIB [--lib LIB ...] --netlist MAPPED_V --top TOP
                     --tb-top TB_TOP --vcd VCD --slews SLEWS --rom-model ROM_MODEL_JSON
-                    --results-strobe NET --results-mode rise|clk_valid [--clock NET]
+                    --results-strobe NET --results-mode rise|fall|clk_valid [--clock NET]
                     [--t-begin NS] --out JSON
       per-net toggles (rises, falls), the energy split, ROM reads and, at every result,
       the cumulative energy (convergence) into JSON.
@@ -513,7 +513,8 @@ def read_vcd(path, wanted, weights, strobe, mode, clock, groups, t_begin):
                 last_read[g] = t_ps
                 energy += groups_energy.get(g, 0.0)
         if counting:
-            if mode == "rise" and strobe_val == "0" and new_strobe == "1":
+            if (mode == "rise" and strobe_val == "0" and new_strobe == "1"
+                    or mode == "fall" and strobe_val == "1" and new_strobe == "0"):
                 results += 1
                 checkpoints.append((t_ps, results, energy))
             elif mode == "clk_valid" and clock_val == "0" and new_clock == "1" and strobe_val == "1":
@@ -912,7 +913,7 @@ def main():
     c.add_argument("--slews")
     c.add_argument("--rom-model")
     c.add_argument("--results-strobe", required=True)
-    c.add_argument("--results-mode", choices=["rise", "clk_valid"], default="rise")
+    c.add_argument("--results-mode", choices=["rise", "fall", "clk_valid"], default="rise")
     c.add_argument("--clock")
     c.add_argument("--t-begin", type=float, default=0.0)
     c.add_argument("--toggles-out")

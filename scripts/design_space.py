@@ -15,7 +15,8 @@ device (specular_device) and the synchronous one (specular_device_sync) compute 
 patent's bits: without an error file of their own they take the patent's.
 
 Energy (issue 36): a design folder may also hold `energy.json` (scripts/energy.sh's):
---energy-table FILE writes the energy table (every design with one) and, with --svg-dir,
+--energy-table FILE writes the energy table (every design with one; --energy-only: nothing
+else, the other table and plots untouched) and, with --svg-dir,
 energy_vs_error.svg and energy_vs_area.svg (energy per result at the common clock against
 the lobe's max |error| and against the die estimate, Pareto fronts marked).
 
@@ -214,6 +215,8 @@ def main():
     p.add_argument("--table")
     p.add_argument("--svg-dir")
     p.add_argument("--energy-table")
+    p.add_argument("--energy-only", action="store_true",
+                   help="only the energy table and plots (the other table and plots untouched)")
     a = p.parse_args()
     errors = {}
     for item in a.error:
@@ -235,11 +238,15 @@ def main():
     front_tput = pareto([(-t, e) for t, e in zip(tput, err)])
     text = table(designs, front_area, front_tput) + "\n" + times_table(designs)
     out = a.table or os.path.join(a.runs, "design_space_table.md")
-    with open(out, "w") as f:
-        f.write(text)
+    if a.energy_only:
+        text, out = "", None
+    if out:
+        with open(out, "w") as f:
+            f.write(text)
     print(text, end="")
     if a.svg_dir:
         os.makedirs(a.svg_dir, exist_ok=True)
+    if a.svg_dir and not a.energy_only:
         plot(designs, die, err, front_area, "die estimate (mm², OSU 0.18 µm)",
              "lobe max |error| (K(n)·cos^n, S10.20)",
              "Area against error (Pareto front: red)", os.path.join(a.svg_dir, "area_vs_error.svg"))

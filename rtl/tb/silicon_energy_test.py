@@ -5,7 +5,7 @@ Icarus replay with delays and with zero delay, the VCD-to-toggles step, the ener
 the Liberty tables, OpenSTA's slews and report_power, the report.
 
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH CHECK
-  CHECK: inverter_chain | glitch | rom_monotonic | openSTA
+  CHECK: inverter_chain | glitch | rom_monotonic | openSTA | arguments
 
 - inverter_chain: three INVX1 in a chain, input toggled K = 40 times (20 rises, 20
   falls): the energy equals the hand computation from INVX1's Liberty numbers, read here
@@ -263,6 +263,25 @@ def check_rom_monotonic(energy_py):
     return 0
 
 
+def check_arguments(energy_py, scratch):
+    """scripts/energy.sh refuses bad arguments with exit 2, naming the value and the range."""
+    script = os.path.join(os.path.dirname(os.path.dirname(energy_py)), "energy.sh")
+    out = os.path.join(scratch, "out")
+    for args, text in ((["--period", "0"], "'0' is not a period in ns from 1 to 1000"),
+                       (["--period", "abc"], "'abc' is not a period in ns from 1 to 1000"),
+                       (["--t-sim", "-3"], "'-3' is not a period in ns above 0"),
+                       (["--random", "x"], "'x' is not a count"),
+                       (["--top", "no_such_top"], "top 'no_such_top' has no flow pieces"),
+                       (["--bogus"], "unknown option '--bogus'"),
+                       ([], "usage")):
+        r = subprocess.run(["bash", script] + args + ([out] if args else []), capture_output=True, text=True)
+        if r.returncode != 2 or text not in r.stderr:
+            print(f"FAIL: energy.sh {' '.join(args)}: exit {r.returncode}, stderr {r.stderr!r}; want 2 and {text!r}")
+            return 1
+    print("PASS arguments: energy.sh refuses bad values with exit 2, naming them")
+    return 0
+
+
 def main():
     energy_py, osu, scratch, check = sys.argv[1:5]
     os.makedirs(scratch, exist_ok=True)
@@ -274,6 +293,8 @@ def main():
         return check_openSTA(energy_py, osu, scratch)
     if check == "rom_monotonic":
         return check_rom_monotonic(energy_py)
+    if check == "arguments":
+        return check_arguments(energy_py, scratch)
     print(f"unknown check '{check}' (inverter_chain, glitch, openSTA, rom_monotonic)")
     return 2
 

@@ -14,6 +14,12 @@ lobe_mean_abs, lobe_max_at {cos_code, n}, out_max_abs, out_mean_abs, out_max_at)
 device (specular_device) and the synchronous one (specular_device_sync) compute the
 patent's bits: without an error file of their own they take the patent's.
 
+Energy (issue 36): a design folder may also hold `energy.json` (scripts/energy.sh's):
+--energy-table FILE writes the energy table (every design with one; --energy-only: nothing
+else, the other table and plots untouched) and, with --svg-dir,
+energy_vs_error.svg and energy_vs_area.svg (energy per result at the common clock against
+the lobe's max |error| and against the die estimate, Pareto fronts marked).
+
 Writes the table (markdown, default RUNS_DIR/design_space_table.md; printed too) and,
 with --svg-dir, area_vs_error.svg (die estimate against the lobe's max |error|) and
 throughput_vs_error.svg (results/s streamed per mm² of die against the same error), the
@@ -49,8 +55,13 @@ def load(runs, errors):
         if os.path.isfile(error_file):
             with open(error_file) as f:
                 e = json.load(f)
+        energy = None
+        energy_file = os.path.join(runs, entry, "energy.json")
+        if os.path.isfile(energy_file):
+            with open(energy_file) as f:
+                energy = json.load(f)
         designs.append({"name": name, "top": s["top"], "summary": s, "error": e,
-                        "label": DEVICE_TOPS.get(s["top"], name)})
+                        "energy": energy, "label": DEVICE_TOPS.get(s["top"], name)})
     # the device's tops first (drawn, synchronous), the patent behind the common ports,
     # then the variants by name
     order = {"specular_device": 0, "specular_device_sync": 1, "specular_patent": 2}
@@ -115,6 +126,38 @@ def table(designs, front_area, front_tput):
     return "\n".join(lines) + "\n"
 
 
+def energy_table(designs, front_error, front_area):
+    """Energy per result (scripts/energy.sh): designs with an energy.json."""
+    lines = ["| design | total (mm²) | die est. (mm²) | lobe max \\|err\\| | clocks / result | "
+             "logic internal (pJ) | switching (pJ) | ROM reads (pJ) | ROM reads / result | "
+             "leakage at 50 ns (pJ) | **total at 50 ns (pJ)** | T_sim (ns) | total at T_sim (pJ) | "
+             "random operands only (pJ, ± s.e.) | "
+             "zero-delay logic (pJ) | glitches: share of the logic energy | share of the toggles | "
+             "results replayed | Pareto |",
+             "|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for i, d in enumerate(designs):
+        g = d["energy"]
+        if g is None:
+            continue
+        s, e = d["summary"], d["error"] or {}
+        short = lambda k: k.split(".genblk1")[0].rsplit("/", 1)[0] if "/" in k else k
+        reads = ", ".join(f"{short(k)} {v:.2f}" for k, v in sorted(g["rom_reads_per_result"].items()))
+        marks = [m for m, f in (("energy–error", front_error), ("energy–area", front_area)) if i in f]
+        pct = lambda k: f"{100 * g[k]:.0f} %" if g.get(k) is not None else "—"
+        rnd = (f"{g['random_dynamic_pj'] + g['leakage_pj_at_period']:.0f} ± "
+               f"{100 * g['random_dynamic_sem_rel']:.1f} % ({g['random_results']})"
+               if g.get("random_results") else "—")
+        lines.append(
+            f"| {d['label']} | {s['area_total_um2'] / 1e6:.3f} | {s['die_area_estimate_mm2']:.3f} | "
+            f"{sci(e.get('lobe_max_abs'))} | {num(g['clocks_per_result'])} | {g['internal_pj']:.0f} | "
+            f"{g['switching_pj']:.0f} | {g['rom_pj']:.0f} | {reads} | {g['leakage_pj_at_period']:.2f} | "
+            f"**{g['total_pj_at_period']:.0f}** | {num(g.get('t_sim_ns'), 1)} | "
+            f"{num(g.get('total_pj_at_t_sim'), 0)} | {rnd} | {num(g.get('zero_delay_logic_pj'), 0)} | "
+            f"{pct('glitch_logic_energy_share')} | {pct('glitch_toggle_share')} | {g['results']} | "
+            f"{', '.join(marks)} |")
+    return "\n".join(lines) + "\n"
+
+
 def times_table(designs):
     """The flow's run time per design (silicon.sh's times.txt: the shared 2-core machine)."""
     lines = ["| design | mapping (s) | STA (s) | T_sim bisection + replay (s) | ROM macros |",
@@ -171,6 +214,9 @@ def main():
     p.add_argument("--error", action="append", default=[], metavar="NAME=FILE")
     p.add_argument("--table")
     p.add_argument("--svg-dir")
+    p.add_argument("--energy-table")
+    p.add_argument("--energy-only", action="store_true",
+                   help="only the energy table and plots (the other table and plots untouched)")
     a = p.parse_args()
     errors = {}
     for item in a.error:
@@ -192,11 +238,15 @@ def main():
     front_tput = pareto([(-t, e) for t, e in zip(tput, err)])
     text = table(designs, front_area, front_tput) + "\n" + times_table(designs)
     out = a.table or os.path.join(a.runs, "design_space_table.md")
-    with open(out, "w") as f:
-        f.write(text)
+    if a.energy_only:
+        text, out = "", None
+    if out:
+        with open(out, "w") as f:
+            f.write(text)
     print(text, end="")
     if a.svg_dir:
         os.makedirs(a.svg_dir, exist_ok=True)
+    if a.svg_dir and not a.energy_only:
         plot(designs, die, err, front_area, "die estimate (mm², OSU 0.18 µm)",
              "lobe max |error| (K(n)·cos^n, S10.20)",
              "Area against error (Pareto front: red)", os.path.join(a.svg_dir, "area_vs_error.svg"))
@@ -205,6 +255,27 @@ def main():
              "lobe max |error| (K(n)·cos^n, S10.20)",
              "Throughput per mm² against error (Pareto front: red)",
              os.path.join(a.svg_dir, "throughput_vs_error.svg"), x_log=True, where="pre")
+    if a.energy_table:
+        have = [d for d in designs if d["energy"] is not None]
+        if not have:
+            sys.stderr.write(f"design_space.py: no energy.json under '{a.runs}'\n")
+            return 1
+        energy = [d["energy"]["total_pj_at_period"] for d in have]
+        err_e = [d["error"]["lobe_max_abs"] if d["error"] else None for d in have]
+        die_e = [d["summary"]["die_area_estimate_mm2"] for d in have]
+        front_error = pareto(list(zip(energy, err_e)))
+        front_area = pareto(list(zip(energy, die_e)))
+        text = energy_table(have, front_error, front_area)
+        with open(a.energy_table, "w") as f:
+            f.write(text)
+        print(text, end="")
+        if a.svg_dir:
+            plot(have, energy, err_e, front_error, "energy per result (pJ, at a 50 ns clock)",
+                 "lobe max |error| (K(n)·cos^n, S10.20)",
+                 "Energy against error (Pareto front: red)", os.path.join(a.svg_dir, "energy_vs_error.svg"))
+            plot(have, energy, die_e, front_area, "energy per result (pJ, at a 50 ns clock)",
+                 "die estimate (mm², OSU 0.18 µm)",
+                 "Energy against area (Pareto front: red)", os.path.join(a.svg_dir, "energy_vs_area.svg"))
     return 0
 
 

@@ -64,7 +64,8 @@ variant_tasks() {  # variant_tasks smoke|full
              emit_group "variant_error_slice_$name" variant_error 2 "$name" --n 1:4 ;;
       full) emit_group "variant_rtl_$name" variant_job 10 rtl "$name"
             emit_group "variant_error_$name" variant_error 10 "$name"
-            emit_group "variant_silicon_$name" variant_job 1 silicon "$name" ;;
+            emit_group "variant_silicon_$name" variant_job 1 silicon "$name"
+            emit_group "variant_energy_$name" variant_job 1 energy "$name" ;;  # issue 36
     esac
   done
 }
@@ -108,6 +109,9 @@ regression_tasks() {
         # The hazard sweep needs the top's hazard probe (the drawn device's control unit).
         [[ $top != specular_device ]] || emit_group "${g}_hazards" gatesim 8 "$common --hazards $t_sim @WORK@ $rom"
       done
+      # Energy per result of the two device tops (issue 36; the variants' in variant_tasks).
+      emit_group energy_device variant_job 1 energy device
+      emit_group energy_device_sync variant_job 1 energy device_sync
       # The numerical study (testbench/study/specular_study): its stages as tasks.
       emit_group study study 6 --workers 1
       ;;

@@ -42,6 +42,14 @@
 #                       repeated or mismatched shard, named); --output F writes the text
 #                       (hazards: the folder of hazards.md/.json), --partial F the merged
 #                       partial (scripts/silicon/gatesim_partial.py)
+#   --vcd FILE          (a period run, one policy) also write the netlist's own scopes'
+#                       value changes into FILE (scripts/silicon/energy.py dumper): the
+#                       activity of scripts/energy.sh (issue 36)
+#   --zero-delay        no SDF, no cell delays (-gspecify off), ROM macros without their
+#                       access time: the zero-delay replay of the same netlist, whose
+#                       toggles the glitch share is measured against (scripts/energy.sh)
+#   --tb-param NAME=V   one more testbench parameter after the top's (energy.sh:
+#                       RESET_EVERY=1000000, no operation aborted by reset)
 #   --quiet             no progress lines (drawn on standard error only when it is a
 #                       terminal: periods tried or policies' vectors run, the total,
 #                       rate and time left, by specular_progress beside specular_tb)
@@ -86,6 +94,9 @@ hazards=""
 random_set=0
 groups_set=0
 quiet=0
+vcd=""
+zero_delay=0
+tb_params_extra=()
 shard_index=0
 shard_count=1
 partial=""
@@ -94,7 +105,8 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --quiet) quiet=1; shift ;;
-    --top|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool)
+    --zero-delay) zero_delay=1; shift ;;
+    --top|--vcd|--tb-param|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --policies) policies="$2" ;;
@@ -102,6 +114,9 @@ while [[ $# -gt 0 ]]; do
         --specular-tb) specular_tb="$2" ;; --bisect) bisect="$2" ;; --hazards) hazards="$2" ;;
         --vectors-tool) vectors_tool="$2" ;;
         --partial) partial="$2" ;;
+        --vcd) vcd="$2" ;;
+        --tb-param) [[ "$2" =~ ^[A-Z_][A-Z0-9_]*=[0-9.]+$ ]] || fail_args "--tb-param '$2': expected NAME=NUMBER"
+                    tb_params_extra+=("$2") ;;
         --shard)
           [[ "$2" =~ ^([0-9]{1,4})/([0-9]{1,4})$ ]] && (( BASH_REMATCH[2] >= 1 && BASH_REMATCH[2] <= 1000 \
             && 10#${BASH_REMATCH[1]} < 10#${BASH_REMATCH[2]} )) \
@@ -155,6 +170,7 @@ TB_DEFINES=()
 VARIANT_VECTORS=0
 # shellcheck source=/dev/null
 source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS, TB_DEFINES, VARIANT_VECTORS (per top)
+TB_PARAMS+=("${tb_params_extra[@]}")
 if [[ $VARIANT_VECTORS -eq 1 ]]; then
   [[ -x "$vectors_tool" ]] || fail_args "specular_variant_vectors not found at '$vectors_tool' (cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)"
   [[ $random_set -eq 1 ]] || random=10
@@ -180,6 +196,22 @@ done
 # ---- the SDF Icarus can read, the ROM models at their SDF access time ---------------
 /usr/bin/python3 "$here/silicon/gatesim_sdf.py" "$netlist_dir" "$out" > "$out/sdf.log" 2>&1 \
   || { echo "gatesim.sh: preparing the SDF failed; see $out/sdf.log" >&2; exit 1; }
+# ---- energy (scripts/energy.sh): the VCD of the netlist's scopes; the zero-delay models
+extra_tops=()
+if [[ -n "$vcd" ]]; then
+  [[ -z "$bisect" && -z "$hazards" ]] || fail_args "--vcd is for a period run"
+  mkdir -p "$(dirname "$vcd")"
+  vcd="$(cd "$(dirname "$vcd")" && pwd)/$(basename "$vcd")"
+  /usr/bin/python3 "$here/silicon/energy.py" dumper "$out/mapped_icarus.v" "$top" "$TB_TOP" "$vcd" \
+    "$out/energy_dump.v" || { echo "gatesim.sh: writing the VCD dumper failed" >&2; exit 1; }
+  extra_tops=(-s energy_dump "$out/energy_dump.v")
+fi
+specify=-gspecify
+if [[ $zero_delay -eq 1 ]]; then
+  specify=-gno-specify
+  sed -E 's/(parameter real ACCESS = )[0-9.]+/\10.0/' "$out/rom_macros_gatesim.v" > "$out/rom_macros_zero.v"
+  mv "$out/rom_macros_zero.v" "$out/rom_macros_gatesim.v"
+fi
 
 # ---- vectors: specular_tb writes the expected values, one file per policy ----------
 if [[ $VARIANT_VECTORS -eq 1 ]]; then
@@ -224,7 +256,8 @@ write_partial() {
 compile_tb() {
   local T="$1" vvp="$2" log="$3" tops=(-s "$TB_TOP") files=()
   if [[ $# -ge 5 ]]; then tops+=(-s "$4"); files+=("$5"); fi
-  iverilog -g2005 -gspecify -o "$vvp" "${tops[@]}" -DGATE_LEVEL ${TB_DEFINES[@]/#/-D} \
+  if [[ ${#extra_tops[@]} -gt 0 ]]; then tops+=("${extra_tops[0]}" "${extra_tops[1]}"); files+=("${extra_tops[2]}"); fi
+  iverilog -g2005 $specify -o "$vvp" "${tops[@]}" -DGATE_LEVEL ${TB_DEFINES[@]/#/-D} \
     "-DSDF_FILE=\"$out/icarus.sdf\"" \
     "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
     "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \

@@ -11,7 +11,8 @@
 #                 scripts/silicon/NAME/.
 #   --no-gatesim  skip the T_sim bisection and the hazards (T_sim is then reported as
 #                 not measured).
-#   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, 10-15 minutes).
+#   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, 10-15 minutes;
+#                 a top without a hazard probe, a variant, skips them with a note).
 #   --vectors-tool PATH  specular_variant_vectors (default
 #                 build/testbench/specular_variant_vectors): a design variant's vectors.
 #   ROM_DIR       rom5.hex, rom38.hex, pins.hex and a variant's tables (default
@@ -35,7 +36,7 @@ root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 
 usage() {
-  sed -n '2,22p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 top=specular_device
@@ -74,6 +75,17 @@ if [[ ! -f "$top_dir/constraints.tcl" ]]; then
 fi
 out="${args[0]}"
 rom_dir="${args[1]:-$root/build/rtl/rom/default}"
+# Fig. 2's hazard step needs the top's hazard probe (TB_PROBE in its gatesim.conf); a top
+# without one (a design variant: one clock, no gated one) skips it with a note (issue 35).
+hazards_note=""
+if [[ $gatesim -eq 1 && $hazards -eq 1 ]]; then
+  probe=$(here="$here" root="$root" top="$top"; TB_PROBE=""; source "$top_dir/gatesim.conf"; echo "${TB_PROBE:-}")
+  if [[ -z "$probe" ]]; then
+    hazards=0
+    hazards_note="top '$top' has no hazard probe (TB_PROBE in $(basename "$top_dir")/gatesim.conf): Fig. 2's hazard step is skipped"
+    echo "silicon.sh: note: $hazards_note" >&2
+  fi
+fi
 
 # ---- what the flow needs, each named with its install line ------------------------
 need() {  # need FILE_OR_COMMAND PACKAGE
@@ -212,6 +224,8 @@ if [[ $gatesim -eq 1 && $hazards -eq 1 ]]; then
   fi
   cp "$out/hazards/hazards.md" "$out/hazards/hazards.json" "$out/"
 fi
+rm -f "$out/hazards_skipped.txt"
+[[ -z "$hazards_note" ]] || echo "$hazards_note" > "$out/hazards_skipped.txt"
 t4=$(seconds)
 printf 'mapping_s %.1f\nsta_s %.1f\ngatesim_s %.1f\nhazards_s %.1f\n' "$(echo "$t1 - $t0" | bc)" \
   "$(echo "$t2 - $t1" | bc)" "$(echo "$t3 - $t2" | bc)" "$(echo "$t4 - $t3" | bc)" > "$out/times.txt"

@@ -10,6 +10,10 @@
   specular_variant_job silicon NAME --shard 0/1 --partial FILE
       scripts/silicon.sh --top specular_NAME --no-hazards into silicon/NAME beside the
       partials' folder (the run's folder), ROMs from BUILD/rtl/rom/default
+  specular_variant_job energy NAME --shard 0/1 --partial FILE
+      scripts/energy.sh --top specular_NAME into energy/NAME beside the partials' folder
+      (the run's folder): the mapping, the SDF and zero-delay replays, the energy per
+      result (issue 36); NAME may also be device or device_sync (the two device tops)
   specular_variant_job --merge FILE...
       one complete set (same job, every shard 0..N-1 once), every shard passed: exit 0
 
@@ -25,7 +29,7 @@ import sys
 import time
 
 KIND = "specular_variant_job partial result"
-JOBS = ("rtl", "rtl-quick", "silicon")
+JOBS = ("rtl", "rtl-quick", "silicon", "energy")
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -58,6 +62,21 @@ def run_job(build, job, name, shard, partial):
         sys.stdout.write(result.stdout)
         passed = re.search(r"\[  PASSED  \] (\d+) test", result.stdout)
         summary = {"exit": result.returncode, "passed_tests": int(passed.group(1)) if passed else 0}
+    elif job == "energy":
+        if count != 1:
+            die("energy is one task: --shard 0/1")
+        out = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(partial))), "energy", name)
+        command = ["bash", os.path.join(ROOT, "scripts", "energy.sh"), "--top", "specular_" + name,
+                   "--vectors-tool", os.path.join(build, "testbench", "specular_variant_vectors"),
+                   "--specular-tb", os.path.join(build, "testbench", "specular_tb"),
+                   out, os.path.join(build, "rtl", "rom", "default")]
+        result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        sys.stdout.write(result.stdout)
+        summary = {"exit": result.returncode, "passed_tests": 1 if result.returncode == 0 else 0, "out": out}
+        figures = os.path.join(out, "energy.json")
+        if result.returncode == 0 and os.path.exists(figures):
+            with open(figures) as f:
+                summary["energy"] = json.load(f)
     else:
         if count != 1:
             die("silicon is one task: --shard 0/1")
@@ -119,6 +138,8 @@ def merge(files):
     for _, p, _, _ in parts:
         if "silicon_summary" in p["summary"]:
             print(json.dumps(p["summary"]["silicon_summary"], indent=2))
+        if "energy" in p["summary"]:
+            print(json.dumps(p["summary"]["energy"], indent=2))
     return 1 if failed else 0
 
 

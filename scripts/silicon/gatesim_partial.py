@@ -152,6 +152,15 @@ class Refused(Exception):
     pass
 
 
+def copy_file(src, dst):
+    """shutil.copy, except a file onto itself: the unsharded hazard sweep (gatesim.sh
+    --hazards without --shard) merges its own partial into its own folder (issue 35)."""
+    target = os.path.join(dst, os.path.basename(src)) if os.path.isdir(dst) else dst
+    if os.path.exists(target) and os.path.samefile(src, target):
+        return
+    shutil.copy(src, target)
+
+
 def first_difference(a, b):
     for key in a:
         if key not in b or a[key] != b[key]:
@@ -284,7 +293,7 @@ def merge(argv):
             raise Refused("--merge of a hazard sweep needs --output DIR (the tables are written there)")
         os.makedirs(output, exist_ok=True)
         out0 = first["result"]["hazards"]["out_dir"]
-        shutil.copy(os.path.join(out0, "icarus.sdf"), os.path.join(output, "icarus.sdf"))
+        copy_file(os.path.join(out0, "icarus.sdf"), os.path.join(output, "icarus.sdf"))
         sweeps = {}
         for _, p in ordered:
             for u in p["result"]["hazards"]["units"]:
@@ -295,7 +304,7 @@ def merge(argv):
                 lines[1].extend(u["boundaries"])
                 for log in glob.glob(os.path.join(p["result"]["hazards"]["out_dir"], "hazards",
                                                   "unit%d" % u["unit"], "x*.log")):
-                    shutil.copy(log, d)
+                    copy_file(log, d)
         for d, (sweep, boundaries) in sweeps.items():
             with open(os.path.join(d, "sweep.txt"), "w") as f:
                 f.writelines(line + "\n" for line in sweep)

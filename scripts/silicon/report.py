@@ -373,7 +373,10 @@ def main():
           "every vector with the SDF delays (gatesim/tsim.txt).\n")
     w("## Fig. 2's hazards in the gate-level simulation\n")
     if hazards is None:
-        w("Not measured in this run (--no-gatesim or --no-hazards).\n")
+        if os.path.exists(f"{out}/hazards_skipped.txt"):
+            w("Not measured: " + read(f"{out}/hazards_skipped.txt").strip() + ".\n")
+        else:
+            w("Not measured in this run (--no-gatesim or --no-hazards).\n")
     else:
         table = read(f"{out}/hazards.md").split("\n", 2)[2]  # without its title
         w(table)

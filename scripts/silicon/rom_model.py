@@ -48,6 +48,18 @@ CELL_CURRENT_UA = 100.0      # a minimum NMOS at Vgs = 1.8 V
 SENSE_SWING_V = 0.3          # bit-line swing the sense inverter needs
 OUTPUT_KOHM = 1.0            # BUFX4 output resistance: delay per pF of load
 INPUT_PF = 0.02              # an address pin drives two NAND3 predecoder inputs
+# Energy per read (issue 36), the same organisation at VDD; a read is an address change
+# (scripts/silicon/energy.py counts them in the gate-level replay):
+VDD_V = 1.8
+WIRE_FF_PER_UM = 0.2         # metal at 0.18 um, area + fringe, a line over the array
+ROW_PITCH_UM = 8 * LAMBDA_UM  # a bit cell's height: a predecode line's length per row
+NAND3_INPUT_PF = 0.0158812   # NAND3X1 input (Liberty): a row decoder's input
+MUX2_SELECT_PF = 0.0173455   # MUX2X1 input (Liberty): the column multiplexer's select
+BITLINE_SWING_V = 2 * SENSE_SWING_V  # self-timed word-line pulse: the mean bit-line
+                             # swing, twice the sense swing the slowest column needs
+ONES_FRACTION = 0.5          # columns of the selected row whose cell discharges its line
+SENSE_PJ = 0.05              # a sense inverter + output buffer transition (INVX1/BUFX4
+                             # internal_power tables, 0.02-0.05 pJ at their loads)
 AREA = {"NAND3X1": 36, "INVX4": 24, "INVX1": 16, "MUX2X1": 48, "BUFX4": 32}  # lib areas
 
 # name, words, width, address bits, column ways (words per row): the device's ROMs. The
@@ -91,6 +103,44 @@ def model(name, words, width, abits, ways):
             "t_decoder_ns": round(t_decoder, 3), "t_wordline_ns": round(t_wordline, 3),
             "t_bitline_ns": round(t_bitline, 3), "t_output_ns": round(t_output, 3),
             "access_ns": round(access, 3)}
+
+
+def model_with_energy(*args):
+    m = model(*args)
+    m.update(read_energy(m))
+    return m
+
+
+def read_energy(m):
+    """Energy per read (pJ) of a macro of model(): the parts in a dict, pJ.
+
+    - decoders: the row address in three predecode groups (a NAND3 row decoder takes one
+      line of each); per read one line of each group falls and one rises, each line the
+      inputs of its rows/lines decoders and a wire the array's height: C V^2 per group;
+    - word line: the old row falls, the new one rises: C_wl V^2, C_wl = columns x
+      WORDLINE_FF_PER_CELL (the access-time model's figure);
+    - bit lines: precharged; the selected row's cells that conduct (ONES_FRACTION of the
+      columns) discharge their line by BITLINE_SWING_V and the precharge restores it:
+      C_bl V_DD dV each, C_bl = rows x BITLINE_FF_PER_CELL;
+    - column multiplexer: its log2(ways) select lines toggle with probability 1/2, each
+      into width x ways/2^(k+1) MUX2X1 selects: 1/2 C V^2 x 1/2;
+    - sense and output: half the output bits change, SENSE_PJ each."""
+    rows, columns, ways, width = m["rows"], m["columns"], m["columns"] // m["width"], m["width"]
+    v2 = VDD_V * VDD_V
+    rbits = max(1, (rows - 1).bit_length())
+    sizes = [rbits // 3 + (1 if k < rbits % 3 else 0) for k in range(3)]
+    wire_pf = rows * ROW_PITCH_UM * WIRE_FF_PER_UM * 1e-3
+    decoder = sum((rows / (1 << g)) * NAND3_INPUT_PF * v2 + wire_pf * v2 for g in sizes if g > 0)
+    wordline = columns * WORDLINE_FF_PER_CELL * 1e-3 * v2
+    bitlines = columns * ONES_FRACTION * rows * BITLINE_FF_PER_CELL * 1e-3 * VDD_V * BITLINE_SWING_V
+    selects = width * (ways - 1) * MUX2_SELECT_PF
+    column_mux = 0.5 * 0.5 * selects * v2
+    sense = 0.5 * width * SENSE_PJ
+    parts = {"decoder_pj": decoder, "wordline_pj": wordline, "bitlines_pj": bitlines,
+             "column_mux_pj": column_mux, "sense_output_pj": sense}
+    parts = {k: round(v, 3) for k, v in parts.items()}
+    parts["energy_read_pj"] = round(sum(parts.values()), 3)
+    return parts
 
 
 def liberty(models):
@@ -214,7 +264,7 @@ def main():
     images = None
     instances = {}
     if len(sys.argv) == 2:
-        models = [model(*m) for m in MACROS]
+        models = [model_with_energy(*m) for m in MACROS]
     else:
         known = {(m[1], m[2]): m for m in MACROS[:2]}
         groups = {}   # (words, width, init) -> name
@@ -241,14 +291,14 @@ def main():
             name = groups[key]
             abits = max(1, (words - 1).bit_length())
             if (words, width) in known and known[(words, width)][0] == name:
-                models.append(model(*known[(words, width)]))
+                models.append(model_with_energy(*known[(words, width)]))
             else:
-                models.append(model(name, words, width, abits, squarest_ways(words, width)))
+                models.append(model_with_energy(name, words, width, abits, squarest_ways(words, width)))
             with open(f"{out}/{name}.hex", "w") as f:
                 f.write(hex_words(init, words, width))
             images[name] = f"{out}/{name}.hex"
             if name == "ROM38_MACRO":
-                models.append(model(*MACROS[2]))
+                models.append(model_with_energy(*MACROS[2]))
         template = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), MAP_TEMPLATE)).read()
         commands = []
         for m in models:

@@ -32,4 +32,5 @@ expect 2 "shard 0/3 is given twice" "${job[@]}" --merge "$scratch/p0.json" "$scr
 expect 2 "other settings" "${job[@]}" --merge "$scratch/p0.json" "$scratch/other1.json" "$scratch/p2.json"
 expect 1 "failed: $scratch/failed1.json" "${job[@]}" --merge "$scratch/p0.json" "$scratch/failed1.json" "$scratch/p2.json"
 expect 2 "unknown job 'proof'" "${job[@]}" proof patent --partial "$scratch/x.json"
+expect 2 "energy is one task: --shard 0/1" "${job[@]}" energy device --shard 0/2 --partial "$scratch/x.json"
 echo "variant_job_merge_test.sh: PASS"

@@ -1,0 +1,303 @@
+#!/usr/bin/env python3
+"""silicon_energy: scripts/silicon/energy.py on netlists small enough to work by hand
+(issue 36, docs/design_space.md "Energy"), through the whole path: the VCD dumper, the
+Icarus replay with delays and with zero delay, the VCD-to-toggles step, the energy from
+the Liberty tables, OpenSTA's slews and report_power, the report.
+
+  silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH CHECK
+  CHECK: inverter_chain | glitch | rom_monotonic | openSTA | arguments
+
+- inverter_chain: three INVX1 in a chain, input toggled K = 40 times (20 rises, 20
+  falls): the energy equals the hand computation from INVX1's Liberty numbers, read here
+  with a regular expression (not energy.py's reader): per stage, 20 x rise_power + 20 x
+  fall_power at its load (the next INVX1's input capacitance; the last stage none) and
+  the slew the test states (0.06 ns, the table's first column), plus 40 x 1/2 C V^2
+  on a, n1 and n2 (one INVX1 input each; y drives nothing);
+  leakage 3 x INVX1's cell_leakage_power.
+- glitch: a = XOR(a, a through six INVX1) is 0 in zero delay; with the cells' delays
+  (-gspecify) every change of a makes a pulse. The delayed replay counts 2K toggles on
+  the XOR's output, the zero-delay replay none; the report's glitch share of the toggles
+  is 2K / 11K (a and six inverter outputs K each, clk 2K, the XOR's 2K).
+- openSTA: the chain's switching energy equals OpenSTA's report_power at an input
+  activity of K (whose 2019 snapshot reports activity x energy; OpenSTA leaves out the
+  input port's net a, which the test subtracts), its internal energy
+  half OpenSTA's (which charges rise_power + fall_power per unit of activity), both with
+  OpenSTA's own slews (energy.py sta-slews).
+- rom_monotonic: scripts/silicon/rom_model.py's energy per read grows with the words
+  (width fixed) and with the width (words fixed).
+Exit 0 pass, 1 fail.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+
+K = 40
+VDD = 1.8
+
+
+def run(cmd, **kw):
+    r = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    if r.returncode != 0:
+        print(f"FAIL: {' '.join(cmd)} exited {r.returncode}\n{r.stdout}\n{r.stderr}")
+        sys.exit(1)
+    return r.stdout
+
+
+CHAIN = """module chain (clk, a, y);
+  input clk, a; output y;
+  wire n1, n2;
+  INVX1 u1 (.A(a), .Y(n1));
+  INVX1 u2 (.A(n1), .Y(n2));
+  INVX1 u3 (.A(n2), .Y(y));
+endmodule
+"""
+
+GLITCH = """module glitch (clk, a, g);
+  input clk, a; output g;
+  wire n1, n2, n3, n4, n5, n6;
+  INVX1 u1 (.A(a), .Y(n1));
+  INVX1 u2 (.A(n1), .Y(n2));
+  INVX1 u3 (.A(n2), .Y(n3));
+  INVX1 u4 (.A(n3), .Y(n4));
+  INVX1 u5 (.A(n4), .Y(n5));
+  INVX1 u6 (.A(n5), .Y(n6));
+  XOR2X1 ux (.A(a), .B(n6), .Y(g));
+endmodule
+"""
+
+TB = """`timescale 1ns/10ps
+module energy_tb;
+  reg a = 0, clk = 0;
+  wire o;
+  integer k;
+  TOP dut (.clk(clk), .a(a), .OUT(o));
+  initial begin
+    #5;
+    for (k = 0; k < K; k = k + 1) begin
+      #10 a = ~a;
+      #2 clk = 1;
+      #2 clk = 0;
+    end
+    #10 $finish;
+  end
+endmodule
+"""
+
+
+def replay(energy_py, osu, scratch, top, out_port, netlist_text, delays, tag):
+    d = os.path.join(scratch, tag)
+    os.makedirs(d, exist_ok=True)
+    net = os.path.join(d, "netlist.v")
+    open(net, "w").write(netlist_text)
+    tb = os.path.join(d, "tb.v")
+    open(tb, "w").write(TB.replace("TOP", top).replace("OUT", out_port).replace("< K", f"< {K}"))
+    vcd = os.path.join(d, "activity.vcd")
+    run(["/usr/bin/python3", energy_py, "dumper", net, top, "energy_tb", vcd, os.path.join(d, "dump.v")])
+    vvp = os.path.join(d, "sim.vvp")
+    run(["iverilog", "-g2005", "-gspecify" if delays else "-gno-specify", "-o", vvp,
+         "-s", "energy_tb", "-s", "energy_dump", os.path.join(osu, "osu018_stdcells.v"), net, tb,
+         os.path.join(d, "dump.v")])
+    run(["vvp", "-n", vvp], cwd=d)
+    return net, vcd, d
+
+
+def compute(energy_py, osu, net, top, vcd, slews, d, name):
+    out = os.path.join(d, f"{name}.json")
+    toggles = os.path.join(d, f"{name}_toggles.txt")
+    run(["/usr/bin/python3", energy_py, "compute", "--lib", os.path.join(osu, "osu018_stdcells.lib"),
+         "--netlist", net, "--top", top, "--tb-top", "energy_tb", "--vcd", vcd, "--slews", slews,
+         "--results-strobe", "clk", "--results-mode", "rise", "--toggles-out", toggles, "--out", out])
+    t = {}
+    for line in open(toggles):
+        n, r, f = line.split()
+        t[n] = (int(r), int(f))
+    return json.load(open(out)), t
+
+
+def liberty_invx1(osu):
+    """INVX1's input capacitance, leakage and the slew-0.06 column of its power tables,
+    read with regular expressions."""
+    text = open(os.path.join(osu, "osu018_stdcells.lib")).read()
+    cell = re.search(r"cell \(INVX1\) \{(.*?)\n\}", text, re.S).group(1)
+    cap = float(re.search(r"pin\(A\).*?capacitance : ([\d.]+);", cell, re.S).group(1))
+    leak = float(re.search(r"cell_leakage_power : ([\d.]+);", cell).group(1))
+    power = re.search(r"internal_power\(\) \{(.*)", cell, re.S).group(1)
+
+    def table(kind):
+        m = re.search(kind + r"\(energy_template_5x5\) \{\s*index_1 \(\"([^\"]*)\"\);\s*"
+                      r"index_2 \(\"([^\"]*)\"\);\s*values \((.*?)\);", power, re.S)
+        loads = [float(x) for x in m.group(1).split(",")]
+        slews = [float(x) for x in m.group(2).split(",")]
+        rows = [[float(x) for x in r.split(",")] for r in re.findall(r"\"([^\"]*)\"", m.group(3))]
+        assert slews[0] == 0.06
+        return loads, [r[0] for r in rows]
+    return cap, leak, table("rise_power"), table("fall_power")
+
+
+def interpolate(table, x):
+    xs, ys = table
+    k = 0 if x <= xs[1] else max(i for i in range(len(xs) - 1) if xs[i] <= x)
+    k = min(k, len(xs) - 2)
+    return ys[k] + (x - xs[k]) / (xs[k + 1] - xs[k]) * (ys[k + 1] - ys[k])
+
+
+def close(a, b, rel=1e-6, what=""):
+    if abs(a - b) > rel * max(abs(a), abs(b), 1e-12):
+        print(f"FAIL: {what}: {a} against {b}")
+        sys.exit(1)
+
+
+def fixed_slews(path, instances, pins):
+    with open(path, "w") as f:
+        for i in instances:
+            for p in pins:
+                f.write(f"{i}/{p} 0.06 0.06\n")
+
+
+def check_inverter_chain(energy_py, osu, scratch):
+    net, vcd, d = replay(energy_py, osu, scratch, "chain", "y", CHAIN, True, "chain")
+    slews = os.path.join(d, "slews.txt")
+    fixed_slews(slews, ["u1", "u2", "u3"], ["A"])
+    e, t = compute(energy_py, osu, net, "chain", vcd, slews, d, "energy")
+    cap, leak, rise, fall = liberty_invx1(osu)
+    for n in ("a", "n1", "n2", "y"):
+        if t.get(n) != (K // 2, K // 2):
+            print(f"FAIL: net {n} toggles {t.get(n)}, want {(K // 2, K // 2)}")
+            return 1
+    loads = [cap, cap, 0.0]   # u1 drives u2, u2 drives u3, u3 the port y (no load)
+    internal = sum(K // 2 * interpolate(rise, c) + K // 2 * interpolate(fall, c) for c in loads)
+    # switching: a (u1's input), n1, n2: one INVX1 input each; y none
+    switching = 3 * K * 0.5 * cap * VDD * VDD
+    close(e["internal_pj"], internal, what="internal energy (pJ)")
+    close(e["switching_pj"], switching, what="switching energy (pJ)")
+    close(e["leakage_nw"], 3 * leak, what="leakage (nW)")
+    if e["results"] != K:
+        print(f"FAIL: {e['results']} results counted, want {K}")
+        return 1
+    print(f"PASS inverter chain: internal {internal:.5f} pJ, switching {switching:.5f} pJ, "
+          f"leakage {3 * leak:.5f} nW, as computed by hand from the Liberty")
+    return 0
+
+
+def check_glitch(energy_py, osu, scratch):
+    got = {}
+    for tag, delays in (("glitch_delays", True), ("glitch_zero", False)):
+        net, vcd, d = replay(energy_py, osu, scratch, "glitch", "g", GLITCH, delays, tag)
+        slews = os.path.join(d, "slews.txt")
+        fixed_slews(slews, [f"u{i}" for i in range(1, 7)] + ["ux"], ["A", "B"])
+        e, t = compute(energy_py, osu, net, "glitch", vcd, slews, d, "energy_sdf" if delays else "energy_zero")
+        got[tag] = (e, t, d)
+    g_delay = sum(got["glitch_delays"][1].get("g", (0, 0)))
+    g_zero = sum(got["glitch_zero"][1].get("g", (0, 0)))
+    if g_delay != 2 * K or g_zero != 0:
+        print(f"FAIL: XOR output toggles {g_delay} with delays (want {2 * K}), {g_zero} in zero delay (want 0)")
+        return 1
+    # the report on the two: the glitch share of the toggles, 2K of 11K
+    d = got["glitch_delays"][2]
+    os.replace(os.path.join(got["glitch_zero"][2], "energy_zero.json"), os.path.join(d, "energy_zero.json"))
+    run(["/usr/bin/python3", energy_py, "report", "--top", "glitch", "--dir", d, "--period", "18",
+         "--clocks-per-result", "1"])
+    r = json.load(open(os.path.join(d, "energy.json")))
+    close(r["glitch_toggle_share"], 2 / 11, what="glitch share of the toggles")
+    if not r["glitch_logic_energy_share"] > 0:
+        print(f"FAIL: glitch energy share {r['glitch_logic_energy_share']}, want > 0")
+        return 1
+    print(f"PASS glitch: {g_delay} toggles of the XOR with delays, {g_zero} in zero delay; "
+          f"glitch share {r['glitch_toggle_share']:.4f} of the toggles, "
+          f"{r['glitch_logic_energy_share']:.4f} of the logic energy")
+    return 0
+
+
+def check_openSTA(energy_py, osu, scratch):
+    net, vcd, d = replay(energy_py, osu, scratch, "chain", "y", CHAIN, True, "chain_sta")
+    tcl_slews = os.path.join(d, "slews_dump.tcl")
+    slews = os.path.join(d, "slews.txt")
+    run(["/usr/bin/python3", energy_py, "sta-slews", tcl_slews, slews])
+    tcl = os.path.join(d, "sta.tcl")
+    lib = os.path.join(osu, "osu018_stdcells.lib")
+    open(tcl, "w").write(f"""read_liberty {{{lib}}}
+read_verilog {{{net}}}
+link_design chain
+create_clock -name clk -period 18 [get_ports clk]
+set_input_transition 0.06 [get_ports a]
+source {{{tcl_slews}}}
+set_power_activity -input -activity {K} -duty 0.5
+report_power -digits 8
+""")
+    out = run(["sta", "-no_splash", "-exit", tcl])
+    m = re.search(r"^Total\s+(\S+)\s+(\S+)\s+(\S+)", out, re.M)
+    sta_internal, sta_switching = float(m.group(1)) * 1e12, float(m.group(2)) * 1e12  # "W" = J here
+    e, t = compute(energy_py, osu, net, "chain", vcd, slews, d, "energy")
+    # OpenSTA gives an instance the switching of the net it drives: the input port's net
+    # a (u1's input, K toggles) is ours only
+    cap = liberty_invx1(osu)[0]
+    port_net = K * 0.5 * cap * VDD * VDD
+    close(e["switching_pj"] - port_net, sta_switching, rel=1e-4, what="switching against OpenSTA")
+    close(e["internal_pj"], sta_internal / 2, rel=1e-3, what="internal against OpenSTA / 2")
+    print(f"PASS OpenSTA: switching {e['switching_pj']:.5f} pJ (OpenSTA {sta_switching:.5f}), "
+          f"internal {e['internal_pj']:.5f} pJ (OpenSTA {sta_internal:.5f}, rise + fall per unit of activity)")
+    return 0
+
+
+def check_rom_monotonic(energy_py):
+    sys.path.insert(0, os.path.dirname(energy_py))
+    import rom_model
+
+    def e(words, width):
+        abits = max(1, (words - 1).bit_length())
+        return rom_model.model_with_energy("X", words, width, abits,
+                                           rom_model.squarest_ways(words, width))["energy_read_pj"]
+    for width in (1, 8, 22, 25, 40):
+        seq = [e(1 << k, width) for k in range(4, 17)]
+        if any(b <= a for a, b in zip(seq, seq[1:])):
+            print(f"FAIL: energy per read not increasing in words at width {width}: {seq}")
+            return 1
+    for words in (16, 512, 1024, 16384, 32768):
+        seq = [e(words, w) for w in range(1, 41)]
+        if any(b <= a for a, b in zip(seq, seq[1:])):
+            print(f"FAIL: energy per read not increasing in width at {words} words: {seq}")
+            return 1
+    print("PASS ROM model: energy per read increases with words and with width")
+    return 0
+
+
+def check_arguments(energy_py, scratch):
+    """scripts/energy.sh refuses bad arguments with exit 2, naming the value and the range."""
+    script = os.path.join(os.path.dirname(os.path.dirname(energy_py)), "energy.sh")
+    out = os.path.join(scratch, "out")
+    for args, text in ((["--period", "0"], "'0' is not a period in ns from 1 to 1000"),
+                       (["--period", "abc"], "'abc' is not a period in ns from 1 to 1000"),
+                       (["--t-sim", "-3"], "'-3' is not a period in ns above 0"),
+                       (["--random", "x"], "'x' is not a count"),
+                       (["--top", "no_such_top"], "top 'no_such_top' has no flow pieces"),
+                       (["--bogus"], "unknown option '--bogus'"),
+                       ([], "usage")):
+        r = subprocess.run(["bash", script] + args + ([out] if args else []), capture_output=True, text=True)
+        if r.returncode != 2 or text not in r.stderr:
+            print(f"FAIL: energy.sh {' '.join(args)}: exit {r.returncode}, stderr {r.stderr!r}; want 2 and {text!r}")
+            return 1
+    print("PASS arguments: energy.sh refuses bad values with exit 2, naming them")
+    return 0
+
+
+def main():
+    energy_py, osu, scratch, check = sys.argv[1:5]
+    os.makedirs(scratch, exist_ok=True)
+    if check == "inverter_chain":
+        return check_inverter_chain(energy_py, osu, scratch)
+    if check == "glitch":
+        return check_glitch(energy_py, osu, scratch)
+    if check == "openSTA":
+        return check_openSTA(energy_py, osu, scratch)
+    if check == "rom_monotonic":
+        return check_rom_monotonic(energy_py)
+    if check == "arguments":
+        return check_arguments(energy_py, scratch)
+    print(f"unknown check '{check}' (inverter_chain, glitch, openSTA, rom_monotonic)")
+    return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

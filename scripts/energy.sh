@@ -1,0 +1,158 @@
+#!/usr/bin/env bash
+# Energy per result of one design from its gate-level activity (issue 36,
+# docs/design_space.md "Energy"): the mapped netlist of scripts/silicon.sh replayed by
+# Icarus twice over the same vectors, with the SDF (glitches count) and with zero delay,
+# each replay's value changes of the netlist's own scopes to a VCD, its toggles weighted
+# by the OSU Liberty's internal-power tables and 1/2 C V^2, the ROM macros' reads by
+# scripts/silicon/rom_model.py's energy per read (scripts/silicon/energy.py).
+#
+#   scripts/energy.sh [options] OUT_DIR [ROM_DIR]
+#
+#   --top NAME          the top (default specular_device), as silicon.sh takes it
+#   --netlist-dir DIR   silicon.sh's output folder (mapped.v, device.sdf, rom_model.json);
+#                       default: run silicon.sh --no-gatesim into OUT_DIR/silicon first
+#   --period NS         the replays' clock period, the common clock (default 50)
+#   --t-sim NS          the design's own T_sim (default: t_sim_ns of DIR's
+#                       silicon_summary.json, if any): leakage also given at T_sim
+#   --clocks-per-result C  for the figure at T_sim (default: the summary's streamed value)
+#   --groups N --random N  the vectors (device tops: gatesim.sh's groups of 10 and random
+#                       operations, default 8 and 200: the 280 of the gate-level
+#                       regression; a variant: 18 edge cases + N random, default 262)
+#   --vectors-tool PATH, --specular-tb PATH  as gatesim.sh
+#   --keep-vcd          keep the two VCDs (deleted after counting by default: up to GBs)
+#   --no-zero-delay     skip the zero-delay replay (no glitch share)
+#
+# OUT_DIR gets energy.json (the figures), energy.md (the table), sdf/ and zero/ (the
+# replays, energy_sdf.json, energy_zero.json, toggles_*.txt) and slews.txt.
+# Exit status: 0 written, 1 a tool or a replay failed, 2 bad arguments.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+root="$(dirname "$here")"
+OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
+usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | grep '^#' | sed 's/^# \{0,1\}//'; }
+fail_args() { echo "energy.sh: $1 (see --help)" >&2; exit 2; }
+
+top=specular_device
+netlist_dir=""
+period=50
+t_sim=""
+cpr=""
+groups=8
+random=""
+vectors_tool="$root/build/testbench/specular_variant_vectors"
+specular_tb="$root/build/testbench/specular_tb"
+keep_vcd=0
+zero=1
+args=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    -h|--help) usage; exit 0 ;;
+    --keep-vcd) keep_vcd=1; shift ;;
+    --no-zero-delay) zero=0; shift ;;
+    --top|--netlist-dir|--period|--t-sim|--clocks-per-result|--groups|--random|--vectors-tool|--specular-tb)
+      [[ $# -ge 2 ]] || fail_args "$1 needs a value"
+      case "$1" in
+        --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --period) period="$2" ;;
+        --t-sim) t_sim="$2" ;; --clocks-per-result) cpr="$2" ;; --groups) groups="$2" ;;
+        --random) random="$2" ;; --vectors-tool) vectors_tool="$2" ;; --specular-tb) specular_tb="$2" ;;
+      esac
+      shift 2 ;;
+    -*) fail_args "unknown option '$1'" ;;
+    *) args+=("$1"); shift ;;
+  esac
+done
+[[ ${#args[@]} -ge 1 && ${#args[@]} -le 2 ]] || fail_args "usage: energy.sh [options] OUT_DIR [ROM_DIR]"
+number='^[0-9]+([.][0-9]+)?$'
+[[ "$period" =~ $number ]] && (( $(echo "$period >= 1 && $period <= 1000" | bc) )) \
+  || fail_args "--period '$period' is not a period in ns from 1 to 1000"
+[[ -z "$t_sim" ]] || { [[ "$t_sim" =~ $number ]] && (( $(echo "$t_sim > 0 && $t_sim <= 1000" | bc) )); } \
+  || fail_args "--t-sim '$t_sim' is not a period in ns above 0 and at most 1000"
+[[ -z "$random" || "$random" =~ ^[0-9]+$ ]] || fail_args "--random '$random' is not a count from 0 to 2000"
+out="${args[0]}"
+rom_dir="${args[1]:-$root/build/rtl/rom/default}"
+top_dir="$here/silicon/$top"
+variant=0
+if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/$top.v" ]]; then
+  top_dir="$here/silicon/variant"; variant=1
+fi
+[[ -f "$top_dir/constraints.tcl" ]] || fail_args "top '$top' has no flow pieces (scripts/silicon/$top/) and is no design variant"
+mkdir -p "$out"
+out="$(cd "$out" && pwd)"
+if [[ -z "$netlist_dir" ]]; then
+  netlist_dir="$out/silicon"
+  bash "$here/silicon.sh" --top "$top" --no-gatesim --vectors-tool "$vectors_tool" "$netlist_dir" "$rom_dir" > "$out/silicon.log" 2>&1 \
+    || { echo "energy.sh: silicon.sh failed (see $out/silicon.log)" >&2; exit 1; }
+fi
+netlist_dir="$(cd "$netlist_dir" && pwd)"
+for f in mapped.v device.sdf rom_macros.lib rom_model.json; do
+  [[ -f "$netlist_dir/$f" ]] || fail_args "'$netlist_dir/$f' not found: run scripts/silicon.sh first"
+done
+summary="$netlist_dir/silicon_summary.json"
+if [[ -z "$t_sim" && -f "$summary" ]]; then
+  t_sim=$(/usr/bin/python3 -c "import json,sys; v=json.load(open(sys.argv[1])).get('t_sim_ns'); print(v if v else '')" "$summary")
+fi
+if [[ -z "$cpr" && -f "$summary" ]]; then
+  cpr=$(/usr/bin/python3 -c "import json,sys; v=json.load(open(sys.argv[1])).get('clocks_per_result_streamed'); print(v if v else '')" "$summary")
+fi
+
+# ---- the vectors and the result strobe of the top -----------------------------------
+# device tops: no operation aborted by reset (their testbench's RESET_EVERY), so that
+# every operation of the stream is a result, as in a variant's testbench
+vec_opts=(--groups "$groups" --random "${random:-200}" --tb-param RESET_EVERY=1000000)
+random_from=$((10 * groups))
+ENERGY_RESULTS=()
+source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top)
+[[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)"
+strobe=("${ENERGY_RESULTS[@]}")
+if [[ $variant -eq 1 ]]; then
+  vec_opts=(--random "${random:-262}")
+  random_from=18
+  [[ -n "$cpr" ]] || cpr=1
+else
+  [[ -n "$cpr" ]] || cpr=2
+fi
+
+# ---- slews: OpenSTA at the period, the top's own SDC -------------------------------
+/usr/bin/python3 "$here/silicon/energy.py" sta-slews "$out/slews_dump.tcl" "$out/slews.txt"
+{
+  echo "read_liberty {$OSU018/osu018_stdcells.lib}"
+  echo "read_liberty {$netlist_dir/rom_macros.lib}"
+  echo "read_verilog {$netlist_dir/mapped.v}"
+  echo "link_design $top"
+  echo "source {$top_dir/constraints.tcl}"
+  echo "constrain $period"
+  echo "source {$out/slews_dump.tcl}"
+} > "$out/slews.tcl"
+sta -no_splash -exit "$out/slews.tcl" > "$out/slews.log" 2>&1 && [[ -s "$out/slews.txt" ]] \
+  || { echo "energy.sh: OpenSTA's slews failed; see $out/slews.log" >&2; exit 1; }
+
+# ---- the replays and their toggles -------------------------------------------------
+modes=(sdf)
+[[ $zero -eq 0 ]] || modes+=(zero)
+for mode in "${modes[@]}"; do
+  extra=()
+  [[ $mode == sdf ]] || extra=(--zero-delay)
+  started=$SECONDS
+  if ! bash "$here/gatesim.sh" --top "$top" --netlist-dir "$netlist_dir" --quiet \
+       --vectors-tool "$vectors_tool" --specular-tb "$specular_tb" "${vec_opts[@]}" "${extra[@]}" \
+       --vcd "$out/$mode/activity.vcd" "$period" "$out/$mode" "$rom_dir" > "$out/$mode.log" 2>&1; then
+    echo "energy.sh: the $mode replay failed at $period ns; see $out/$mode.log" >&2
+    exit 1
+  fi
+  echo "sim_s $((SECONDS - started))" > "$out/$mode/time.txt"
+  started=$SECONDS
+  /usr/bin/python3 "$here/silicon/energy.py" compute --lib "$OSU018/osu018_stdcells.lib" \
+    --lib "$netlist_dir/rom_macros.lib" --netlist "$netlist_dir/mapped.v" --top "$top" \
+    --tb-top "$TB_TOP" --vcd "$out/$mode/activity.vcd" --slews "$out/slews.txt" \
+    --rom-model "$netlist_dir/rom_model.json" "${strobe[@]}" \
+    --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
+    || { echo "energy.sh: counting the $mode activity failed" >&2; exit 1; }
+  echo "count_s $((SECONDS - started))" >> "$out/$mode/time.txt"
+  echo "vcd_bytes $(stat -c %s "$out/$mode/activity.vcd")" >> "$out/$mode/time.txt"
+  [[ $keep_vcd -eq 1 ]] || rm -f "$out/$mode/activity.vcd"
+done
+/usr/bin/python3 "$here/silicon/energy.py" report --top "$top" --dir "$out" --period "$period" \
+  ${t_sim:+--t-sim "$t_sim"} --clocks-per-result "$cpr" --random-from "$random_from" \
+  || { echo "energy.sh: the report failed" >&2; exit 1; }
+echo "energy.sh: $out/energy.md, $out/energy.json"

@@ -52,7 +52,10 @@ if named=$(grep -rlaF -e "$build" -e "$root" -e "$work/install_first" "$work/pre
   done <<<"$named"
   exit 1
 fi
-(cd "$work/prefix" && find . -type f | sort) | tee "$work/files.txt" | sed 's/^/   /' | head -5
+# The first five names shown: sed reads the whole list (head would close the pipe early,
+# and under pipefail the writer's SIGPIPE, exit 141, would fail the check).
+(cd "$work/prefix" && find . -type f | sort) >"$work/files.txt"
+sed -n '1,5s/^/   /p' "$work/files.txt"
 echo "   ... $(wc -l <"$work/files.txt") files"
 unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit(Firmware)?/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/[a-z0-9_]+\.(v|hex)|firmware/specular_driver\.c))$' \
              "$work/files.txt" || true)
@@ -135,7 +138,7 @@ fi
 expect_systemc "$work/headers.log"
 if ! cmake --build "$work/headers/build" -j "$jobs" >>"$work/headers.log" 2>&1; then
   echo "consumer_check: FAIL: installed headers that do not compile alone without warnings:" >&2
-  grep -E 'error|warning' "$work/headers.log" | head -40 >&2
+  grep -E 'error|warning' "$work/headers.log" | sed -n '1,40p' >&2
   exit 1
 fi
 echo "   $headers headers clean"

@@ -204,17 +204,20 @@ fs::path consumer_source(const fs::path& dir) {
   return source;
 }
 
-Outcome configure(const fs::path& dir, const std::string& arguments, const std::string& environment = "") {
-  // A sanitized build's library needs the sanitizers' runtime in the consumer's link too.
+/// A sanitized build's library needs the sanitizers' runtime in a consumer's link too:
+/// the `-D`s that give it, or nothing for a plain build.
+std::string sanitizer_flags() {
   const std::string sanitize = cache_value("SPECULAR_SANITIZE");
-  const std::string flags =
-      sanitize == "ON" || sanitize == "TRUE" || sanitize == "1"
-          ? " '-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined'"
-            " '-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined'"
-          : "";
+  return sanitize == "ON" || sanitize == "TRUE" || sanitize == "1"
+             ? " '-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined'"
+               " '-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined'"
+             : "";
+}
+
+Outcome configure(const fs::path& dir, const std::string& arguments, const std::string& environment = "") {
   return run_command(environment + cmake() + " -S " + shell_quoted(consumer_source(dir)) + " -B " +
-                         shell_quoted(dir / "build") + " -DCMAKE_BUILD_TYPE=Release" + flags +
-                         " " + arguments,
+                         shell_quoted(dir / "build") + " -DCMAKE_BUILD_TYPE=Release" +
+                         sanitizer_flags() + " " + arguments,
                      dir, "configure");
 }
 
@@ -492,7 +495,7 @@ TEST(PackageCore, APlainMainOnCoreConfiguresBuildsAndRunsWhereNoSystemCCanBeFoun
   const Outcome r = run_command(
       hidden.environment + cmake() + " -S " + shell_quoted(fs::path(SPECULAR_SOURCE_DIR) / "examples/consumer") +
           " -B " + shell_quoted(dir / "build") + " -DCMAKE_BUILD_TYPE=Release -DSPECULAR_CONSUMER_CORE_ONLY=ON" +
-          " -DCMAKE_PREFIX_PATH=" + shell_quoted(prefix) + hidden.arguments,
+          " -DCMAKE_PREFIX_PATH=" + shell_quoted(prefix) + sanitizer_flags() + hidden.arguments,
       dir, "configure");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_EQ(r.out.find("sc_api_version"), std::string::npos) << "no SystemC is looked for:\n" << r.out;

@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <regex>
 #include <string>
 
+#include "support/installed_package.h"
 #include "support/scratch.h"
 #include "support/subprocess.h"
 
@@ -21,30 +21,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using specular::testing_support::cmake;
+using specular::testing_support::install;
 using specular::testing_support::Outcome;
 using specular::testing_support::run_command;
 using specular::testing_support::scratch_subdir;
+using specular::testing_support::shell_quoted;
 using specular::testing_support::slurp;
-
-std::string shell_quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
-std::string cache_value(const std::string& name) {
-  const std::string cache = slurp(fs::path(SPECULAR_BINARY_DIR) / "CMakeCache.txt");
-  std::smatch m;
-  if (!std::regex_search(cache, m, std::regex("\n" + name + ":[A-Z]+=([^\n]*)")))
-    ADD_FAILURE() << name << " is not in " << SPECULAR_BINARY_DIR << "/CMakeCache.txt";
-  return m.size() > 1 ? m[1].str() : std::string();
-}
-std::string cmake() { return shell_quoted(cache_value("CMAKE_COMMAND")); }
-
-fs::path install(const fs::path& dir) {
-  const fs::path prefix = dir / "prefix";
-  const Outcome r = run_command(cmake() + " --install " + shell_quoted(SPECULAR_BINARY_DIR) +
-                                    " --prefix " + shell_quoted(prefix),
-                                dir, "install");
-  EXPECT_EQ(r.status, 0) << "cmake --install failed (build every target first):\n" << r.out << r.err;
-  return prefix;
-}
 
 const fs::path consumer = fs::path(SPECULAR_SOURCE_DIR) / "tests/firmware/consumer";
 /// Arguments that leave no SystemC to find: no CMake package, no pkg-config.

@@ -18,6 +18,7 @@
 #include <regex>
 #include <string>
 
+#include "support/installed_package.h"
 #include "support/scratch.h"
 #include "support/subprocess.h"
 
@@ -25,12 +26,15 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using specular::testing_support::cache_value;
+using specular::testing_support::cmake;
+using specular::testing_support::install;
 using specular::testing_support::Outcome;
 using specular::testing_support::run_command;
 using specular::testing_support::scratch_subdir;
+using specular::testing_support::shell_quoted;
 using specular::testing_support::slurp;
 
-std::string shell_quoted(const fs::path& path) { return "'" + path.string() + "'"; }
 
 void write_file(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
@@ -67,26 +71,6 @@ Systemc other_standard() {
   return s;
 }
 
-/// A value of the build's CMakeCache.txt (the cmake and the compiler the build used).
-std::string cache_value(const std::string& name) {
-  const std::string cache = slurp(fs::path(SPECULAR_BINARY_DIR) / "CMakeCache.txt");
-  std::smatch m;
-  if (!std::regex_search(cache, m, std::regex("\n" + name + ":[A-Z]+=([^\n]*)")))
-    ADD_FAILURE() << name << " is not in " << SPECULAR_BINARY_DIR << "/CMakeCache.txt";
-  return m.size() > 1 ? m[1].str() : std::string();
-}
-std::string cmake() { return shell_quoted(cache_value("CMAKE_COMMAND")); }
-
-/// This build installed into `dir`/prefix, as a SoC team installs it.
-fs::path install(const fs::path& dir) {
-  const fs::path prefix = dir / "prefix";
-  const Outcome r = run_command(cmake() + " --install " + shell_quoted(SPECULAR_BINARY_DIR) +
-                                    " --prefix " + shell_quoted(prefix),
-                                dir, "install");
-  EXPECT_EQ(r.status, 0) << "cmake --install failed (build the targets specular and "
-                            "specular_twin first):\n" << r.out << r.err;
-  return prefix;
-}
 fs::path config_file(const fs::path& prefix) {
   for (const char* lib : {"lib", "lib64", "lib/x86_64-linux-gnu"})
     if (fs::exists(prefix / lib / "cmake/SpecularUnit/SpecularUnitConfig.cmake"))

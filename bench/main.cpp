@@ -115,7 +115,7 @@ std::vector<Model> listed_models() {
       {"rtl_general_cpp_stream",
        [](const Plan& p) { measure_rtl_cycle_model(p, "rtl_general_cpp_stream", true, false); },
        4'000'000, 200'000, 3, "RTL twin as plain C++, general verilation, streaming (2 T)"},
-      // The synchronous variant (rtl/specular_device_sync.v) as plain C++: the fast
+      // The synchronous variant (rtl/device/specular_device_sync.v) as plain C++: the fast
       // cycle model (docs/rtl.md).
       {"rtl_sync_cpp",
        [](const Plan& p) { measure_rtl_sync_cycle_model(p, "rtl_sync_cpp", false); },

@@ -40,7 +40,7 @@ t_sim=""
 cpr=""
 groups=8
 random=""
-vectors_tool="$root/build/testbench/specular_variant_vectors"
+vectors_tool="$root/build/tools/variant_vectors/specular_variant_vectors"
 specular_tb="$root/build/testbench/specular_tb"
 keep_vcd=0
 zero=1
@@ -73,7 +73,7 @@ out="${args[0]}"
 rom_dir="${args[1]:-$root/build/rtl/rom/default}"
 top_dir="$here/silicon/$top"
 variant=0
-if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/$top.v" ]]; then
+if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/design_space/$top.v" ]]; then
   top_dir="$here/silicon/variant"; variant=1
 fi
 [[ -f "$top_dir/constraints.tcl" ]] || fail_args "top '$top' has no flow pieces (scripts/silicon/$top/) and is no design variant"

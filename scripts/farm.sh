@@ -33,10 +33,16 @@ root="$(cd "$(dirname "$script")/.." && pwd)"
 
 die() { echo "farm.sh: error: $*" >&2; exit 2; }
 
+# A task kind's program in a build tree: specular_tb in testbench/, every other tool in
+# tools/KIND/ (docs/README.md's layout).
+tool_of() {  # tool_of BUILD KIND
+  if [[ $2 == tb ]]; then echo "$1/testbench/specular_tb"; else echo "$1/tools/$2/specular_$2"; fi
+}
+
 # ---- the regressions -----------------------------------------------------------------
 # One line per task: ID <tab> GROUP <tab> KIND <tab> ARGUMENTS. KIND is tb, prove, study
-# or gatesim; the task runs "$build/testbench/specular_KIND ARGUMENTS --shard I/N
-# --partial ..." (study: testbench/study/specular_study; gatesim: scripts/gatesim.sh, with
+# or gatesim; the task runs "$(tool_of BUILD KIND) ARGUMENTS --shard I/N --partial ..."
+# (tb: testbench/specular_tb, a tool: tools/KIND/specular_KIND; gatesim: scripts/gatesim.sh, with
 # @WORK@ in ARGUMENTS the task's own folder work/ID and @NETLISTS@ the run's netlists).
 # Tasks of one GROUP are the N shards of one run and merge into one answer.
 emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
@@ -53,9 +59,10 @@ emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
 # --list), so a new variant needs no line here. smoke: its quick RTL test and a small
 # error sweep; full: its exhaustive RTL proof (10 shards of test_long_variant_rtl_NAME),
 # its exhaustive error sweep (10 shards, merged) and its silicon run. The RTL and
-# silicon tasks run scripts/variant_job.py (build/testbench/specular_variant_job).
+# silicon tasks run scripts/variant_job.py (build/tools/variant_job/specular_variant_job).
 variant_tasks() {  # variant_tasks smoke|full
-  local lister="$build/testbench/specular_variant_error" name names
+  local lister name names
+  lister=$(tool_of "$build" variant_error)
   [[ -x $lister ]] || die "no $lister (build target specular_variant_error)"
   names=$("$lister" --list) || die "$lister --list failed"
   for name in $names; do
@@ -87,7 +94,7 @@ regression_tasks() {
       emit_group prove_rtl_sync prove 50 --model rtl-sync
       local model device
       for model in pin tlm; do
-        for device in $("$build/testbench/specular_prove" --help | sed -n 's/.*one of: \(.*\); or all/\1/p' | tr -d ','); do
+        for device in $("$(tool_of "$build" prove)" --help | sed -n 's/.*one of: \(.*\); or all/\1/p' | tr -d ','); do
           emit_group "prove_${model}_${device//\//_}" prove 20 --model "$model" --device "$device"
         done
       done
@@ -112,7 +119,7 @@ regression_tasks() {
       # Energy per result of the two device tops (issue 36; the variants' in variant_tasks).
       emit_group energy_device variant_job 1 energy device
       emit_group energy_device_sync variant_job 1 energy device_sync
-      # The numerical study (testbench/study/specular_study): its stages as tasks.
+      # The numerical study (tools/study/specular_study): its stages as tasks.
       emit_group study study 6 --workers 1
       ;;
     coverage)  # issue 37: the quick suite under gcov in 8 slices of one coverage build
@@ -170,12 +177,12 @@ run_task() {  # run_task DIR ID
   rm -f "$dir/status/$id.json" "$partial"
   local started ended status=0
   started=$(date +%s.%N)
-  local tool=("$build_dir/testbench/specular_$kind")
+  local tool=("$(tool_of "$build_dir" "$kind")")
   case $kind in
     gatesim) tool=(bash "$root/scripts/gatesim.sh" --quiet --specular-tb "$build_dir/testbench/specular_tb")
              args=${args//@WORK@/$dir/work/$id}; args=${args//@NETLISTS@/$dir/netlists}
              rm -rf "$dir/work/$id" ;;
-    study) tool=("$build_dir/testbench/study/specular_study" --quiet --out "$dir/work/$id")
+    study) tool+=(--quiet --out "$dir/work/$id")
            rm -rf "$dir/work/$id" ;;
     # issue 37: coverage slices of the build made at submission; mutants
     coverage) tool=(bash "$root/scripts/coverage.sh" run --build "$dir/build-coverage") ;;
@@ -219,14 +226,13 @@ run_merge() {  # run_merge DIR
     kind=$(awk -F'\t' -v g="$group" '$2 == g {print $3; exit}' "$dir/tasks.tsv")
     local files=()
     while read -r id; do files+=("$dir/partials/$id.json"); done < <(awk -F'\t' -v g="$group" '$2 == g {print $1}' "$dir/tasks.tsv")
-    local extra=() tool=("$build_dir/testbench/specular_$kind")
+    local extra=() tool=("$(tool_of "$build_dir" "$kind")")
     case $kind in
       tb) extra=(--partial "$dir/merged/$group.json") ;;
       gatesim) tool=(bash "$root/scripts/gatesim.sh")
                extra=(--partial "$dir/merged/$group.json")
                [[ $group != *_hazards ]] || extra+=(--output "$dir/merged/$group") ;;
-      study) tool=("$build_dir/testbench/study/specular_study")
-             extra=(--out "$dir/merged/$group") ;;
+      study) extra=(--out "$dir/merged/$group") ;;
       coverage) tool=(bash "$root/scripts/coverage.sh") extra=(--out "$dir/merged/$group")
                 extra+=(--build "$dir/build-coverage") ;;
       rtl_mutants|cpp_mutants) tool=(python3 "$root/scripts/$kind.py") ;;
@@ -342,8 +348,8 @@ case "$command" in
     [[ $regression =~ ^(smoke|full|coverage|mutants)$ ]] || die "unknown regression '$regression' (allowed: smoke, full, coverage, mutants)"
     shift 2
     parse_options "$@"
-    [[ -x $build/testbench/specular_tb && -x $build/testbench/specular_prove ]] ||
-      die "no specular_tb and specular_prove in $build/testbench (build them, or give --build DIR)"
+    [[ -x $(tool_of "$build" tb) && -x $(tool_of "$build" prove) ]] ||
+      die "no $(tool_of "$build" tb) or $(tool_of "$build" prove) (build them, or give --build DIR)"
     tasks=$(regression_tasks "$regression")
     [[ -n $out_dir ]] || out_dir="$PWD/farm-$regression-$(date -u +%Y%m%dT%H%M%SZ)"
     [[ ! -e $out_dir || -z $(ls -A "$out_dir") ]] || die "--out: '$out_dir' exists and is not empty"

@@ -12,12 +12,12 @@
 #
 #   --top NAME          top module (default specular_device); its testbench settings are
 #                       scripts/silicon/NAME/gatesim.conf, or for a design variant's top
-#                       without a folder (rtl/specular_NAME.v) scripts/silicon/variant/'s:
+#                       without a folder (rtl/design_space/specular_NAME.v) scripts/silicon/variant/'s:
 #                       rtl/tb/specular_variant_tb.v, vectors from the variant's C++ model
 #                       (specular_variant_vectors NAME --count 18+R --seed 1, R = --random,
 #                       here 10 by default: 28 operations; --policies and --groups unused)
 #   --vectors-tool PATH specular_variant_vectors (default
-#                       build/testbench/specular_variant_vectors), for a variant's top
+#                       build/tools/variant_vectors/specular_variant_vectors), for a variant's top
 #   --netlist-dir DIR   the output folder of scripts/silicon.sh (mapped.v, device.sdf,
 #                       rom_macros_sim.v); default: run silicon.sh --no-gatesim into
 #                       OUT_DIR/silicon first
@@ -88,7 +88,7 @@ policies="patent/patent/clamp"
 random=8
 groups=2
 specular_tb="$root/build/testbench/specular_tb"
-vectors_tool="$root/build/testbench/specular_variant_vectors"
+vectors_tool="$root/build/tools/variant_vectors/specular_variant_vectors"
 bisect=""
 hazards=""
 random_set=0
@@ -151,7 +151,7 @@ fi
 [[ "$random" =~ ^[0-9]+$ && $random -le 2000 ]] || fail_args "--random '$random' is not a count from 0 to 2000"
 [[ "$groups" =~ ^[1-8]$ ]] || fail_args "--groups '$groups' is not a count from 1 to 8"
 conf="$here/silicon/$top/gatesim.conf"
-if [[ ! -d "$here/silicon/$top" && "$top" == specular_* && -f "$root/rtl/$top.v" ]]; then
+if [[ ! -d "$here/silicon/$top" && "$top" == specular_* && -f "$root/rtl/design_space/$top.v" ]]; then
   conf="$here/silicon/variant/gatesim.conf"   # a design variant's top: the generic settings
 fi
 [[ -f "$conf" ]] || fail_args "top '$top' has no gate-level settings (scripts/silicon/$top/gatesim.conf)"
@@ -267,7 +267,7 @@ compile_tb() {
     "$TB_FILE" "${files[@]}" > "$log" 2>&1
 }
 
-# ---- progress (issue 27): specular_tb's progress line (testbench/progress.h) through
+# ---- progress (issue 27): specular_tb's progress line (tools/run_support/progress.h) through
 # the specular_progress tool beside it, one line per period tried or per policy's
 # vectors, on standard error only when it is a terminal and --quiet is not given.
 progress_tool="$(dirname "$specular_tb")/specular_progress"

@@ -30,6 +30,8 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl")
+# The device's Verilog (rtl/sources.cmake): the targets live in device/.
+DEVICE_SOURCES = sorted(glob.glob(os.path.join(RTL, "device", "*.v")) + glob.glob(os.path.join(RTL, "primitives", "*.v")))
 TARGETS = {
     # target: (module file, testbench, testbench top, top the mutant replaces)
     "specular_device": ("specular_device.v", "specular_device_tb.v", "specular_device_tb"),
@@ -64,7 +66,7 @@ def yosys(script, work, timeout=None):
 def read_design(target):
     """Yosys commands: every RTL source, the target flattened (ROM words left to the
     simulator: the memories are declared without their images)."""
-    sources = " ".join(sorted(glob.glob(os.path.join(RTL, "*.v"))))
+    sources = " ".join(DEVICE_SOURCES)
     return ("read_verilog -DSPECULAR_ROM_WORDS_FROM_HOST -defer %s\n"
             "hierarchy -top %s\nproc\nflatten\nopt_clean\nhierarchy -top %s\n" % (sources, target, target))
 
@@ -79,7 +81,7 @@ def parameter_block(target):
     """The target's parameters and localparams as body declarations: the testbench sets
     the parameters and reads the derived widths (dut.COS_W ...) of the mutant as of the
     original."""
-    src = open(os.path.join(RTL, TARGETS[target][0])).read()
+    src = open(os.path.join(RTL, "device", TARGETS[target][0])).read()
     m = re.search(r"module\s+%s\s*#\((.*?)\)\s*\(" % target, src, re.S)
     if not m:
         return ""
@@ -111,7 +113,7 @@ def write_mutant(target, mutation, work):
 def replay(target, mutant_file, combination, build, work):
     """One Icarus replay of the RTL tests (run_icarus.cmake): 'pass', 'fail', 'refused'."""
     module_file, testbench, tb_top = TARGETS[target]
-    sources = [s for s in sorted(glob.glob(os.path.join(RTL, "*.v"))) if os.path.basename(s) != module_file]
+    sources = [s for s in DEVICE_SOURCES if os.path.basename(s) != module_file]
     sources.append(mutant_file)
     constants, normalisation, saturation = combination
     scratch = os.path.join(work, "replay")

@@ -14,11 +14,11 @@
 #   --no-hazards  skip the hazard measurements (gatesim.sh --hazards, 10-15 minutes;
 #                 a top without a hazard probe, a variant, skips them with a note).
 #   --vectors-tool PATH  specular_variant_vectors (default
-#                 build/testbench/specular_variant_vectors): a design variant's vectors.
+#                 build/tools/variant_vectors/specular_variant_vectors): a design variant's vectors.
 #   ROM_DIR       rom5.hex, rom38.hex, pins.hex and a variant's tables (default
 #                 build/rtl/rom/default).
 #
-# A design variant's top (rtl/specular_NAME.v, the common ports of docs/design_space.md)
+# A design variant's top (rtl/design_space/specular_NAME.v, the common ports of docs/design_space.md)
 # without a folder of its own takes scripts/silicon/variant/ (one clock, inputs 3T/4,
 # outputs read at the next edge); its clocks per result and latency are measured by
 # rtl/tb/specular_variant_tb.v in RTL (tb_rtl.txt, 200 vectors), and after the T_sim
@@ -40,7 +40,7 @@ usage() {
 }
 
 top=specular_device
-vectors_tool="$root/build/testbench/specular_variant_vectors"
+vectors_tool="$root/build/tools/variant_vectors/specular_variant_vectors"
 gatesim=1
 hazards=1
 args=()
@@ -63,14 +63,14 @@ if [[ ${#args[@]} -lt 1 || ${#args[@]} -gt 2 ]]; then
   exit 2
 fi
 top_dir="$here/silicon/$top"
-# A design variant's top (rtl/specular_NAME.v with the common ports of
+# A design variant's top (rtl/design_space/specular_NAME.v with the common ports of
 # docs/design_space.md) without a folder of its own takes the generic one.
-if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/$top.v" ]]; then
+if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/design_space/$top.v" ]]; then
   top_dir="$here/silicon/variant"
 fi
 if [[ ! -f "$top_dir/constraints.tcl" ]]; then
   echo "silicon.sh: top '$top' has no flow pieces (scripts/silicon/$top/constraints.tcl)" \
-       "and is no design variant (rtl/specular_NAME.v); known tops: $(cd "$here/silicon" && ls -d */ | tr -d / | tr '\n' ' ')" >&2
+       "and is no design variant (rtl/design_space/specular_NAME.v); known tops: $(cd "$here/silicon" && ls -d */ | tr -d / | tr '\n' ' ')" >&2
   exit 2
 fi
 out="${args[0]}"
@@ -121,7 +121,8 @@ t0=$(seconds)
 # them (as scripts/synth.sh does), so their cells stay counted per block; likewise the
 # leading-one normaliser into ROM 5.
 sources=()
-for f in "$root"/rtl/*.v; do sources+=("$f"); done
+# The Verilog folders of rtl/sources.cmake; the design-space tops include variant_ports.vh.
+for f in "$root"/rtl/{device,primitives,design_space}/*.v; do sources+=("$f"); done
 front_rest="read_verilog ${sources[*]}
 read_verilog -overwrite $here/silicon/fig2_cells.v
 hierarchy -check -top $top
@@ -188,7 +189,7 @@ if [[ "$top_dir" == "$here/silicon/variant" ]]; then
     "(cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)" >&2; exit 2; }
   "$vectors_tool" "${top#specular_}" --count 200 --seed 1 --out "$out/tb_rtl_vectors.txt" \
     || { echo "silicon.sh: specular_variant_vectors ${top#specular_} failed" >&2; exit 1; }
-  if ! iverilog -g2005 -o "$out/tb_rtl.vvp" -s specular_variant_tb "-DVARIANT_TOP=$top" \
+  if ! iverilog -g2005 -o "$out/tb_rtl.vvp" -s specular_variant_tb "-DVARIANT_TOP=$top" -I "$root/rtl/design_space" \
          "-Pspecular_variant_tb.VECTORS=\"$out/tb_rtl_vectors.txt\"" "${sources[@]}" \
          "$root/rtl/tb/specular_variant_tb.v" > "$out/tb_rtl_compile.log" 2>&1 \
      || ! (cd "$rom_dir" && vvp -n "$out/tb_rtl.vvp") > "$out/tb_rtl.txt" 2>&1 \

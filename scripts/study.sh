@@ -53,7 +53,7 @@ cmake --build "$build_dir" -j"$workers" --target specular_study
 
 echo "== run the study into $out_dir" >&2
 start=$(date +%s)
-"$build_dir/testbench/study/specular_study" --out "$out_dir" --workers "$workers" "${quick[@]}"
+"$build_dir/tools/study/specular_study" --out "$out_dir" --workers "$workers" "${quick[@]}"
 echo "== study took $(( $(date +%s) - start )) s" >&2
 
 echo "== plot into $figures_dir" >&2

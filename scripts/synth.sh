@@ -48,7 +48,7 @@ out="$(cd "$out" && pwd)"
 rom_dir="$(cd "$rom_dir" && pwd)"
 
 sources=()
-for f in "$root"/rtl/*.v; do sources+=("$f"); done
+for f in "$root"/rtl/{device,primitives,design_space}/*.v; do sources+=("$f"); done  # rtl/sources.cmake
 
 # multiply_round_saturate, the primitive multipliers 39 and 13–15 share, is flattened
 # into each, and the leading-one normaliser into ROM 5: the cells stay counted per block

@@ -17,7 +17,7 @@
   specular_variant_job --merge FILE...
       one complete set (same job, every shard 0..N-1 once), every shard passed: exit 0
 
-build/testbench/specular_variant_job (written by CMake) runs this with --build BUILD.
+build/tools/variant_job/specular_variant_job (written by CMake) runs this with --build BUILD.
 A partial is JSON: kind, version, settings {job, name}, shard {index, count},
 summary {exit, passed_tests, ...}, timing {wall_seconds}.
 """
@@ -67,7 +67,7 @@ def run_job(build, job, name, shard, partial):
             die("energy is one task: --shard 0/1")
         out = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(partial))), "energy", name)
         command = ["bash", os.path.join(ROOT, "scripts", "energy.sh"), "--top", "specular_" + name,
-                   "--vectors-tool", os.path.join(build, "testbench", "specular_variant_vectors"),
+                   "--vectors-tool", os.path.join(build, "tools", "variant_vectors", "specular_variant_vectors"),
                    "--specular-tb", os.path.join(build, "testbench", "specular_tb"),
                    out, os.path.join(build, "rtl", "rom", "default")]
         result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)

@@ -6,10 +6,6 @@
 namespace specular {
 namespace tb {
 
-std::string dump_json(const Json& json) {
-  return json.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
-
 Json run_settings_json(const RunDescription& run) {
   Json s;
   s["model"] = run.model;

@@ -4,21 +4,15 @@
 #pragma once
 
 #include <memory>
-#include <nlohmann/json.hpp>
 #include <ostream>
 #include <string>
 
+#include "json.h"
 #include "report.h"
 #include "scoreboard.h"
 
 namespace specular {
 namespace tb {
-
-/// Keys keep the order they are written in (the report reads top to bottom).
-using Json = nlohmann::ordered_json;
-
-/// One line of JSON; bytes that are not UTF-8 (a file name) become U+FFFD.
-std::string dump_json(const Json& json);
 
 /// What names a run: model, stimulus, policies, clock and operation count — the first
 /// fields of the report's settings and of a partial result's (partial.h).

@@ -325,7 +325,7 @@ Model and device:
                             pin (default): the pin-level SystemC netlist, driven on
                             pins 17-35 (reset 29, load registers, start on 27, read
                             24-26 at the rising edge of 35); cycles are measured.
-                            rtl: the RTL twin (rtl/*.v verilated into SystemC) under
+                            rtl: the RTL twin (rtl/device/ verilated into SystemC) under
                             the same harness, protocol checker and options as pin.
                             rtl-sync: the synchronous variant (one clock, start and
                             loads sampled at its rising edge; docs/rtl.md) under the

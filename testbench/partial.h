@@ -14,24 +14,14 @@
 #include <vector>
 
 #include "json_report.h"
+#include "partial_set.h"
 #include "shard.h"
 
 namespace specular {
 namespace tb {
 
-/// The partial file's "kind" and layout version (a merge refuses any other).
+/// The partial file's "kind" (a merge refuses any other; the frame: partial_set.h).
 constexpr const char* partial_kind = "specular_tb partial result";
-constexpr int partial_version = 1;
-
-/// The commit the build came from ("unknown" outside a git checkout; "-dirty" appended
-/// when the working tree differed from it at build time).
-const char* build_commit();
-
-/// What one shard measured of itself.
-struct ShardTiming {
-  double wall_seconds = 0;  ///< the run, stimulus to summary (elaboration included)
-  double cpu_seconds = 0;   ///< user + system CPU of the whole process so far
-};
 
 /// The settings every shard of a run shares: the unsharded run's description, every
 /// width, the sweep's RGB and a checksum of an input file's operations.
@@ -41,24 +31,6 @@ Json partial_settings(const RunDescription& whole, const std::array<long long, 3
 /// The whole partial document.
 Json partial_json(const Json& settings, const Shard& shard, const Summary& summary,
                   const ShardTiming& timing);
-
-/// The user + system CPU time of this process, in seconds.
-double process_cpu_seconds();
-
-/// One partial file as read.
-struct PartialFile {
-  std::string path;
-  Json json;
-  Shard shard;
-  Summary summary;  ///< specular_tb's partials only
-};
-
-/// Reads `files` (partials of `kind`) and checks they are one complete set: the same
-/// commit, the same settings, the same count N and every index 0..N-1 exactly once.
-/// Returns them in index order; throws UsageError naming the offending file or shard.
-/// `tb_summary`: also read specular_tb's summary (partial_kind).
-std::vector<PartialFile> read_complete_set(const std::vector<std::string>& files,
-                                          const std::string& kind, bool tb_summary);
 
 /// `specular_tb --merge FILE... [--format text|json] [--output FILE] [--partial FILE]`:
 /// `args` are those after --merge. Returns the exit status (0 PASS, 1 FAIL, 2 refused).

@@ -21,7 +21,7 @@ enum class Model {
   core,  ///< the kernel-free bit-accurate core; latency annotated from the spec
   tlm,   ///< the TLM-2.0 `lt` target through its registers; cycles = its annotation
   rtl,   ///< the verilated RTL twin (rtl/, twin/) driven through the same harness as `pin`
-  rtl_sync,  ///< the synchronous variant (rtl/specular_device_sync.v), its own protocol
+  rtl_sync,  ///< the synchronous variant (rtl/device/specular_device_sync.v), its own protocol
   /// A design variant's C++ model (issue 26, RunSettings::variant): kernel-free, no
   /// clock (cycles 0). Chosen by specular_tb --variant NAME, never by --model.
   variant,

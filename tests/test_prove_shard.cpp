@@ -23,7 +23,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string prove = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_prove";
+const std::string prove = std::string(SPECULAR_BINARY_DIR) + "/tools/prove/specular_prove";
 
 Outcome run_prove(const std::string& arguments, const fs::path& dir) {
   return run_command(prove + " " + arguments, dir, "prove");

@@ -1,4 +1,4 @@
-// Multipliers 13–15 verilated alone (rtl/multiplier_rgb.v at the default widths,
+// Multipliers 13–15 verilated alone (rtl/device/multiplier_rgb.v at the default widths,
 // twin/multipliers.cmake) against arith::mul_rgb (issue 13, must-have 5), × all 256
 // intensities each:
 //  - every distinct K·A value — multiplier 39's output code — that the

@@ -42,7 +42,7 @@ TEST(TbProgress, UnitAndLabelNameWhatIsCounted) {
 
 // The scripts' progress (scripts/gatesim.sh): the same line through specular_progress.
 TEST(TbProgress, ToolPrintsTheLineAndRefusesBadValues) {
-  const std::string tool = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_progress";
+  const std::string tool = std::string(SPECULAR_BINARY_DIR) + "/tools/progress/specular_progress";
   const auto dir = scratch_dir();
   const Outcome ok = run_command("'" + tool + "' 250000 1021000 2", dir, "ok");
   EXPECT_EQ(ok.status, 0) << ok.err;
@@ -65,7 +65,7 @@ TEST(TbProgress, ToolPrintsTheLineAndRefusesBadValues) {
 // The soak's stages: no progress line when standard error is a file, none with --quiet
 // on a terminal (script(1) gives the run one).
 TEST(TbProgress, SoakFollowsTheSameRule) {
-  const std::string soak = std::string(SPECULAR_BINARY_DIR) + "/testbench/soak/specular_soak";
+  const std::string soak = std::string(SPECULAR_BINARY_DIR) + "/tools/soak/specular_soak";
   const auto dir = scratch_dir();
   const Outcome file = run_command("'" + soak + "' --core 20000 --pin 0 --tlm 0 --tlm-pin 0", dir, "file");
   EXPECT_EQ(file.status, 0) << file.err;
@@ -117,7 +117,7 @@ TEST(TbProgress, NoProgressWhenStandardErrorIsAFile) {
 // the proof of 8 193 000 operations takes over a second, the line is drawn every half
 // second), none with --quiet there.
 TEST(TbProgress, ProveFollowsTheSameRule) {
-  const std::string prove = std::string(SPECULAR_BINARY_DIR) + "/testbench/specular_prove";
+  const std::string prove = std::string(SPECULAR_BINARY_DIR) + "/tools/prove/specular_prove";
   const std::string arguments = " --model rtl-sync --device patent/clamp/patent --cos-stride 8";
   const auto dir = scratch_dir();
   const Outcome file = run_command("'" + prove + "'" + arguments, dir, "file");

@@ -1,4 +1,4 @@
-// specular_variant_error (issue 26, testbench/variant_error/): a variant's error over
+// specular_variant_error (issue 26, tools/variant_error/): a variant's error over
 // every cos code × a range of n. The figures are recomputed here from the variant's
 // results with an independent double reference (2π/(n+2)·cos^n, its product with 255,
 // the patent's formula K(n)·(1 − ½·log2(1 − n·log2 cos)) clamped at 0), and the merge of

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <vector>
 
-#include "register_docs/register_docs.h"
+#include "register_docs.h"
 #include "support/tlm_bench.h"
 
 namespace specular {

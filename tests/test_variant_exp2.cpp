@@ -81,7 +81,7 @@ TEST(Exp2Unit, ExactAtZeroAndAtIntegers) {
 }
 
 TEST(Exp2Unit, TheTableFitsTheVerilogUnitsWords) {
-  // rtl/exp2_unit.v's defaults: 2^9 words of VALUE_FRAC = 24 + DELTA_W = 16 bits. The largest
+  // rtl/design_space/exp2_unit.v's defaults: 2^9 words of VALUE_FRAC = 24 + DELTA_W = 16 bits. The largest
   // difference, 2^25·(1 − 2^(−1/512)) ≈ 45 400, needs 16 bits.
   const Exp2Table unit;
   EXPECT_EQ(unit.words().size(), 512u);

@@ -1,4 +1,4 @@
-# Multipliers 13–15 verilated alone (issue 13, must-have 5): rtl/multiplier_rgb.v at the
+# Multipliers 13–15 verilated alone (issue 13, must-have 5): rtl/device/multiplier_rgb.v at the
 # parameters specular_device passes it at the default widths (NORM_W = 1 + NORM_INT +
 # NORM_FRAC = 31, RGB_BITS = 8, OUT_W = 1 + OUT_INT + OUT_FRAC = 32, SHIFT = NORM_FRAC −
 # OUT_FRAC = 7), as plain C++, for tests/test_rtl_multipliers.cpp. Included at the end
@@ -12,7 +12,7 @@ verilate(specular_rtl_models PREFIX Vmultiplier_rgb TOP_MODULE multiplier_rgb
   DIRECTORY ${RTL_MULTIPLIER_RGB_DIR}
   # Relative to twin/, where Verilator runs: the installed archive names no folder of
   # this machine (issue 35, twin/CMakeLists.txt).
-  SOURCES ../rtl/multiplier_rgb.v ../rtl/multiply_round_saturate.v
+  SOURCES ../rtl/device/multiplier_rgb.v ../rtl/primitives/multiply_round_saturate.v
   VERILATOR_ARGS ${RTL_VERILATOR_ARGS} ${RTL_MULTIPLIER_RGB_PARAMS}
   OPT_FAST ${RTL_OPT})
 

@@ -7,7 +7,7 @@
 namespace specular {
 
 namespace {
-// Frozen from `specular_constants` (testbench/study/constants_search.cpp; table in
+// Frozen from `specular_constants` (tools/study/constants_search.cpp; table in
 // docs/study.md §5): the branch and bound's global optimum of max_x |s·A − 2^−x| over
 // the codes pins 20 (2^−22 steps) and 19 (2^−F steps) hold, with the peak exact.
 //   minimax-half: h = ½ kept, a = 4819202·2^−22 = 1.148987293, error 0.073369204.

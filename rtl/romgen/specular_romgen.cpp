@@ -10,8 +10,8 @@
 //   specular_romgen --out-dir DIR [--bank-bits B] [--width NAME=VALUE]...
 //       writes DIR/rom5.hex (2^rom5_addr_bits words) and DIR/rom38.hex (2^B banks of
 //       2^n_bits words; bank b = Normalisation value b, unused banks zero), DIR/pins.hex
-//       and DIR/exp2.hex (variant exp2's exp2 unit, rtl/exp2_unit.v), DIR/recip.hex
-//       (variant schlick's reciprocal table, rtl/reciprocal_nr.v)
+//       and DIR/exp2.hex (variant exp2's exp2 unit, rtl/design_space/exp2_unit.v), DIR/recip.hex
+//       (variant schlick's reciprocal table, rtl/design_space/reciprocal_nr.v)
 //   specular_romgen --check DUMP [--bank-bits B] [--width NAME=VALUE]...
 //       compares every "rom5 BUS LOG2" and "rom38 BANK N K" line (hex) of DUMP with the
 //       tables; exit 1 on the first difference or when an address was never read
@@ -153,7 +153,7 @@ void write_images(const Options& o) {
                   "): words 2c, 2c+1 for Constants value c",
               64, words);
 
-  // Variant exp2's exp2 unit (rtl/exp2_unit.v): 2^(i/2^A) and the difference to the next
+  // Variant exp2's exp2 unit (rtl/design_space/exp2_unit.v): 2^(i/2^A) and the difference to the next
   // word. Its organisation is the unit's own, the same in every width set.
   const specular::variants::Exp2Table exp2;
   write_image(o.out_dir + "/exp2.hex",
@@ -163,7 +163,7 @@ void write_images(const Options& o) {
                   std::to_string(exp2.delta_bits()) + " bits}",
               exp2.word_bits(), exp2.words());
 
-  // Variant schlick's reciprocal table (rtl/reciprocal_nr.v): the same at every width set.
+  // Variant schlick's reciprocal table (rtl/design_space/reciprocal_nr.v): the same at every width set.
   const specular::variants::ReciprocalNr reciprocal;
   write_image(o.out_dir + "/recip.hex",
               "variant schlick: 1/m table, " + std::to_string(reciprocal.words().size()) + " words x U0." +

@@ -50,7 +50,7 @@ module specular_device_tb;
               (start_offset < -0.5 || start_offset >= 0.5))
     $fatal(1, "specular_device_tb: START_OFFSET %f is outside [-0.5, 0.5) periods", start_offset);
 
-  // The device's width parameters (rtl/specular_device.v; defaults: docs/design.md's
+  // The device's width parameters (rtl/device/specular_device.v; defaults: docs/design.md's
   // formats, as specular_tb uses them without --width).
   parameter COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8;
   parameter ROM5_ADDR_BITS = 15, ROM5_WORD_BITS = 22;

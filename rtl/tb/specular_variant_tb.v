@@ -4,7 +4,7 @@
 // module name is the macro VARIANT_TOP (-DVARIANT_TOP=specular_NAME).
 //
 // VECTORS: one operation per line, hex: cos n r g b lobe out_r out_g out_b (the expected
-// lobe and pins 24-26 from the C++ model, testbench/variants/specular_variant_vectors).
+// lobe and pins 24-26 from the C++ model, tools/variant_vectors/specular_variant_vectors).
 // Start is held high with the next operands while any remain; a start counts as taken
 // at a rising edge where ready was 1 just before it, and the next operands then come
 // 3T/4 after that edge (the SDC's input delay). Outputs are read just before each rising

@@ -24,7 +24,7 @@ if(CORRUPT)
   file(WRITE ${SCRATCH}/vectors.txt "${text}\n")
 endif()
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
-execute_process(COMMAND ${IVERILOG} -g2005 -o ${SCRATCH}/tb.vvp -s specular_variant_tb
+execute_process(COMMAND ${IVERILOG} -g2005 -o ${SCRATCH}/tb.vvp -s specular_variant_tb -I${INCLUDE_DIR}
                         -DVARIANT_TOP=specular_${NAME}
                         "-Pspecular_variant_tb.VECTORS=\"${SCRATCH}/vectors.txt\""
                         ${SOURCES} ${TB}

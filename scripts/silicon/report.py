@@ -305,7 +305,7 @@ def main():
         w(f"| {m['name']} | {fmt(m['words'])} x {m['width']} | {m['rows']} x {m['columns']} | "
           f"{fmt(m['array_um2'])} | {fmt(m['periphery_um2'])} | {fmt(m['area_um2'])} | {m['access_ns']:.2f} |")
     w("")
-    w("ROM38_MACRO holds the 16 banks of rtl/rom38.v (the netlist's); ROM38_BANK_MACRO is the one "
+    w("ROM38_MACRO holds the 16 banks of rtl/device/rom38.v (the netlist's); ROM38_BANK_MACRO is the one "
       "bank a device built for one policy holds.\n")
     w("## Area total\n")
     w("| part | area (um^2) |")

@@ -67,7 +67,7 @@ AREA = {"NAND3X1": 36, "INVX4": 24, "INVX1": 16, "MUX2X1": 48, "BUFX4": 32}  # l
 # (rows closest to columns), the rule these three follow.
 MACROS = [
     ("ROM5_MACRO", 32768, 22, 15, 32),
-    ("ROM38_MACRO", 16384, 25, 14, 32),       # the 16 banks rtl/rom38.v holds
+    ("ROM38_MACRO", 16384, 25, 14, 32),       # the 16 banks rtl/device/rom38.v holds
     ("ROM38_BANK_MACRO", 1024, 25, 10, 8),    # one bank: a device built for one policy
 ]
 

@@ -46,7 +46,8 @@ fi
 # The unsharded reference of every group of the smoke regression.
 mkdir -p "$scratch/ref"
 while IFS=$'\t' read -r group kind args; do
-  "$build/testbench/specular_$kind" $args --partial "$scratch/ref/$group.json" >"$scratch/ref/$group.txt" ||
+  tool="$build/tools/$kind/specular_$kind"; [[ $kind != tb ]] || tool="$build/testbench/specular_tb"
+  "$tool" $args --partial "$scratch/ref/$group.json" >"$scratch/ref/$group.txt" ||
     fail "unsharded $group failed"
 done < <("$farm" list smoke --build "$build" | awk -F'\t' '!seen[$2]++ {sub(/ --shard [0-9]+\/[0-9]+$/, "", $4); print $2 "\t" $3 "\t" $4}')
 

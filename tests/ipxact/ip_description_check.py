@@ -12,7 +12,7 @@
       descent), against the same map.
   ip_description_check.py rtl-ports EXPORT SOURCE_DIR SCRATCH YOSYS ROM_DIR
       the component's Verilog ports, module parameters and file sets against Yosys's
-      reading of rtl/specular_device.v and rtl/specular_device_sync.v.
+      reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v.
   ip_description_check.py current EXPORT SOURCE_DIR SCRATCH
       the committed ip/ files equal what specular_ip_export writes now.
 
@@ -291,6 +291,7 @@ def check_systemrdl(export, source, scratch):
 # ---- the Verilog tops ----------------------------------------------------------------
 
 TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync"}
+RTL_FOLDERS = ("device", "primitives", "design_space")  # rtl/sources.cmake
 
 
 def yosys_json(yosys, rom_dir, script, out):
@@ -317,10 +318,11 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
                       for i in model.findall(f"{Q}instantiations/{Q}componentInstantiation")}
     file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
     rtl = os.path.join(source, "rtl")
-    sources = sorted(os.path.join(rtl, f) for f in os.listdir(rtl) if f.endswith(".v"))
+    sources = sorted(os.path.join(rtl, d, f) for d in RTL_FOLDERS
+                     for f in os.listdir(os.path.join(rtl, d)) if f.endswith(".v"))
     parameter_of = {p.get("parameterId"): p for p in root.iter(Q + "parameter", Q + "moduleParameter")}
     for index, (top, view) in enumerate(TOPS.items()):
-        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{top}.v",
+        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/device/{top}.v",
                              os.path.join(scratch, f"{top}.json"))
         ports = modules[top]["ports"]
         # every Verilog port, in order, with its direction, width and signedness

@@ -17,7 +17,7 @@
 namespace specular {
 namespace testing_support {
 
-inline const std::string soak = std::string(SPECULAR_BINARY_DIR) + "/testbench/soak/specular_soak";
+inline const std::string soak = std::string(SPECULAR_BINARY_DIR) + "/tools/soak/specular_soak";
 
 struct SoakRun {
   int status = -1;

@@ -1,4 +1,4 @@
-// A design variant's verilated top (rtl/specular_NAME.v) equals its C++ model
+// A design variant's verilated top (rtl/design_space/specular_NAME.v) equals its C++ model
 // (specular::variants::make_variant(NAME)) to the bit: the lobe and pins 24–26 of every
 // operation, streamed through the variants' common ports (twin/variants/variant_rtl.h).
 // Built once per variant by tests/CMakeLists.txt: VARIANT_NAME, VARIANT_HEADER and

@@ -1,5 +1,5 @@
 // Variant exp2: ROM 5 → multiplier 6 (× n) → exp2 unit → ROM 38 / multiplier 39 →
-// multipliers 13–15, each an arith.h block function or the exp2 unit (rtl/specular_exp2.v).
+// multipliers 13–15, each an arith.h block function or the exp2 unit (rtl/design_space/specular_exp2.v).
 #include "specular/variants/exp2.h"
 
 #include <stdexcept>

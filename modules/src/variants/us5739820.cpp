@@ -1,6 +1,6 @@
 // US 5,739,820's repeated squaring (see the header): base, k squarings, then the
 // device's tail (ROM 38, multiplier 39, multipliers 13–15). Same bits as
-// rtl/specular_us5739820.v.
+// rtl/design_space/specular_us5739820.v.
 #include "specular/variants/us5739820.h"
 
 #include <array>

@@ -1,0 +1,12 @@
+# The Verilog's folders, named once for rtl/, twin/ and ip/ (docs/rtl.md, "Layout"):
+#   device/        the blocks of Fig. 1-2 by reference number and the two device tops
+#   primitives/    gates, flip-flop, registers and the arithmetic the blocks share
+#   design_space/  the design-space tops and their own blocks; variant_ports.vh, their
+#                  common ports, is included from there (SPECULAR_RTL_INCLUDE_DIR)
+# The scripts (silicon.sh, synth.sh, rtl_mutants.py) read the same three folders.
+set(SPECULAR_RTL_DIR ${CMAKE_CURRENT_LIST_DIR})
+file(GLOB SPECULAR_RTL_DEVICE_SOURCES CONFIGURE_DEPENDS
+     ${SPECULAR_RTL_DIR}/device/*.v ${SPECULAR_RTL_DIR}/primitives/*.v)
+file(GLOB SPECULAR_RTL_DESIGN_SPACE_SOURCES CONFIGURE_DEPENDS ${SPECULAR_RTL_DIR}/design_space/*.v)
+set(SPECULAR_RTL_ALL_SOURCES ${SPECULAR_RTL_DEVICE_SOURCES} ${SPECULAR_RTL_DESIGN_SPACE_SOURCES})
+set(SPECULAR_RTL_INCLUDE_DIR ${SPECULAR_RTL_DIR}/design_space)

@@ -1,0 +1,126 @@
+// specular_ip_export: the IP's descriptions for SoC tools, written from the register map
+// (register_map.h, register_fields.h) and the Verilog tops' headers (docs/ipxact.md):
+//
+//   specular_ip_export --source-dir DIR [--version V] [--libdir D]
+//                      [--ipxact FILE] [--systemrdl FILE] [--json FILE]
+//
+//   --ipxact FILE     the IEEE 1685-2014 component (ip/specular_unit.xml)
+//   --systemrdl FILE  the SystemRDL 2.0 addrmap (ip/specular_unit.rdl)
+//   --json FILE       the C++ map as plain JSON, for the tests (no writer's code)
+//   --bus-dir DIR     the bus and abstraction definitions of the socket's bus type
+//                     (ip/tlm2_generic_payload.busdef.xml, .absdef.xml)
+//   --source-dir DIR  the source tree: rtl/device/ holds the Verilog tops
+//   --version V       the component's version (default: the package's)
+//   --libdir D        the install's library folder, relative to the prefix (default lib)
+//
+// FILE "-" is standard output. Exit status: 0 written, 2 bad arguments, an unreadable
+// Verilog file or an unwritable output.
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ipxact_writer.h"
+#include "map_json.h"
+#include "systemrdl_writer.h"
+#include "verilog_header.h"
+
+#ifndef SPECULAR_PACKAGE_VERSION
+#error "SPECULAR_PACKAGE_VERSION: the build passes the package's version"
+#endif
+
+namespace {
+
+const char* usage =
+    "usage: specular_ip_export --source-dir DIR [--version V] [--libdir D]\n"
+    "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE] [--bus-dir DIR]\n";
+
+bool write(const std::string& path, const std::string& text) {
+  if (path == "-") {
+    std::cout << text;
+    return static_cast<bool>(std::cout);
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) {
+    std::cerr << "specular_ip_export: error: cannot write '" << path << "'\n";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace specular::ip_export;
+  std::map<std::string, std::string> options{{"--version", SPECULAR_PACKAGE_VERSION},
+                                             {"--libdir", "lib"}};
+  const std::vector<std::string> known{"--source-dir", "--version", "--libdir",
+                                       "--ipxact",     "--systemrdl", "--json", "--bus-dir"};
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help") {
+      std::cout << usage;
+      return 0;
+    }
+    bool is_known = false;
+    for (const std::string& k : known) is_known = is_known || k == arg;
+    if (!is_known || i + 1 >= argc) {
+      std::cerr << "specular_ip_export: error: "
+                << (is_known ? "'" + arg + "' needs a value" : "unknown option '" + arg + "'")
+                << "; the options are --source-dir, --version, --libdir, --ipxact, --systemrdl, --json, "
+                   "--bus-dir\n"
+                << usage;
+      return 2;
+    }
+    options[arg] = argv[++i];
+  }
+  if (!options.count("--ipxact") && !options.count("--systemrdl") && !options.count("--json") &&
+      !options.count("--bus-dir")) {
+    std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl, --json "
+                 "or --bus-dir\n"
+              << usage;
+    return 2;
+  }
+  bool ok = true;
+  if (options.count("--json")) ok = write(options["--json"], register_map_json()) && ok;
+  if (options.count("--bus-dir")) {
+    ok = write(options["--bus-dir"] + "/" + bus_definition_file, ipxact_bus_definition()) && ok;
+    ok = write(options["--bus-dir"] + "/" + abstraction_definition_file,
+               ipxact_abstraction_definition()) && ok;
+  }
+  if (options.count("--systemrdl"))
+    ok = write(options["--systemrdl"], systemrdl_addrmap(options["--version"])) && ok;
+  if (options.count("--ipxact")) {
+    if (!options.count("--source-dir")) {
+      std::cerr << "specular_ip_export: error: --ipxact needs --source-dir (the Verilog tops)\n";
+      return 2;
+    }
+    ComponentFacts facts;
+    facts.version = options["--version"];
+    facts.libdir = options["--libdir"];
+    const std::string rtl = options["--source-dir"] + "/rtl";
+    try {
+      // The folders of rtl/sources.cmake: the device's blocks, the primitives, the
+      // design-space tops (read too: a module name must be unique across all three).
+      const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space"});
+      for (const char* top : {"specular_device", "specular_device_sync"}) {
+        // The file as the component names it: relative to the source tree.
+        VerilogModule m = read_module_header(rtl + "/device/" + top + ".v");
+        m.file = std::string("rtl/device/") + top + ".v";
+        facts.tops.push_back(m);
+        std::vector<std::string> names;  // relative to rtl/ (device/adder8.v)
+        for (const std::string& path : file_closure(modules, top))
+          names.push_back(path.substr(rtl.size() + 1));
+        facts.top_files.push_back(names);
+      }
+    } catch (const VerilogError& e) {
+      std::cerr << "specular_ip_export: error: " << e.what() << "\n";
+      return 2;
+    }
+    ok = write(options["--ipxact"], ipxact_component(facts)) && ok;
+  }
+  return ok ? 0 : 2;
+}

@@ -10,7 +10,8 @@ repository root when it starts with `/`), must be an existing file or folder; an
 anchor must be the GitHub slug of a heading of the target .md file. Links inside code
 (fenced blocks, `inline code`) are not links. Not checked: http(s), mailto and other
 schemes, and links into the build tree (`build/...`), which exists only after a build.
-Also checks that README.md has at most 200 lines.
+Also checks that README.md has at most 200 lines, and that docs/README.md, the index,
+links every page docs/*.md and every folder of docs/.
 
 Prints each broken link as FILE:LINE: what is wrong; exits 1 if there is one, else 0.
 Standard library only.
@@ -135,6 +136,29 @@ def check_link(root, md, target):
     return None
 
 
+def unindexed(root):
+    """docs/README.md is the index: every page docs/*.md and every folder of docs/ must
+    be the target of one of its links (a link to a folder or to a file inside it)."""
+    index = os.path.join(root, "docs", "README.md")
+    if not os.path.isfile(index):
+        return ["docs/README.md:1: missing (the index of the docs)"]
+    targets = set()
+    for _, target in links_of(index):
+        path_part = urllib.parse.unquote(target.strip("<>").partition("#")[0])
+        if path_part and not re.match(r"^[a-zA-Z][a-zA-Z0-9+.-]*:", path_part):
+            targets.add(os.path.normpath(os.path.join(os.path.dirname(index), path_part)))
+    missing = []
+    docs = os.path.join(root, "docs")
+    for name in sorted(os.listdir(docs)):
+        path = os.path.join(docs, name)
+        if os.path.isdir(path):
+            if not any(t == path or t.startswith(path + os.sep) for t in targets):
+                missing.append(f"docs/README.md:1: the folder docs/{name}/ is not in the index")
+        elif name.endswith(".md") and name != "README.md" and path not in targets:
+            missing.append(f"docs/README.md:1: the page docs/{name} is not in the index")
+    return missing
+
+
 def main(argv):
     if len(argv) != 2 or not os.path.isdir(argv[1]):
         print("usage: check_links.py SOURCE_DIR (the repository root)", file=sys.stderr)
@@ -159,6 +183,8 @@ def main(argv):
                 pending.append(f"{where}: {problem[1]}")
             elif problem:
                 broken.append(f"{where}: {problem}")
+
+    broken += unindexed(root)
 
     with open(readme, encoding="utf-8") as f:
         readme_lines = sum(1 for _ in f)

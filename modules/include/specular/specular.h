@@ -1,4 +1,5 @@
-// The one public header: everything a user of the IP needs.
+/// \file
+/// The one public header: everything a user of the IP needs.
 #pragma once
 
 #include "specular/arith.h"

@@ -1,5 +1,6 @@
-// Software's view of the IP: what a CPU's driver does over the bus, for initiators
-// (the testbench, the example virtual platform, users' platforms).
+/// \file
+/// Software's view of the IP: what a CPU's driver does over the bus, for initiators
+/// (the testbench, the example virtual platform, users' platforms).
 #pragma once
 
 #include <array>

@@ -1,4 +1,5 @@
-// `lt`: the TLM target computed by the bit-accurate core, loosely timed.
+/// \file
+/// `lt`: the TLM target computed by the bit-accurate core, loosely timed.
 #pragma once
 
 #include "specular/core.h"

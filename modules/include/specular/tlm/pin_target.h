@@ -1,4 +1,5 @@
-// `pin`: the TLM target as a transactor in front of the pin-level netlist.
+/// \file
+/// `pin`: the TLM target as a transactor in front of the pin-level netlist.
 #pragma once
 
 #include <cstdint>

@@ -1,20 +1,21 @@
-// The bit fields of the register map (register_map.h), written once as a table: each
-// field's position, width, access, description and, for an enumerated field, which
-// enumeration its values come from.
-//
-// register_map.h gives each row's offset, access and reset as one 32-bit word and the
-// bits of STATUS, CONTROL and CONFIG as constants (status_bits, control_bits,
-// config_bits); this table names every field of every row, and the static_asserts below
-// tie it to those constants and to config_word(), so it cannot drift from them. Every
-// description of the map for other tools comes from here: the firmware C header
-// (firmware/include/specular/specular_regs.h, specular_firmware_header, docs/firmware.md)
-// and the IP-XACT component and SystemRDL addrmap (ip/, specular_ip_export,
-// docs/ipxact.md). Kernel-free: no SystemC.
-//
-// Names: upper case C identifiers, the names firmware uses (SPECULAR_<REG>_<FIELD>_*):
-// CONFIG's fraction widths are COS_FRAC_BITS and OUT_FRAC_BITS, like RGB_BITS beside
-// them, since they hold a number of bits, not a fraction. Enumerated values are named
-// the same way, after the C++ enumerator's to_string ("device-energy" → DEVICE_ENERGY).
+/// \file
+/// The bit fields of the register map (register_map.h), written once as a table: each
+/// field's position, width, access, description and, for an enumerated field, which
+/// enumeration its values come from.
+///
+/// register_map.h gives each row's offset, access and reset as one 32-bit word and the
+/// bits of STATUS, CONTROL and CONFIG as constants (status_bits, control_bits,
+/// config_bits); this table names every field of every row, and the static_asserts below
+/// tie it to those constants and to config_word(), so it cannot drift from them. Every
+/// description of the map for other tools comes from here: the firmware C header
+/// (firmware/include/specular/specular_regs.h, specular_firmware_header, docs/firmware.md)
+/// and the IP-XACT component and SystemRDL addrmap (ip/, specular_ip_export,
+/// docs/ipxact.md). Kernel-free: no SystemC.
+///
+/// Names: upper case C identifiers, the names firmware uses (SPECULAR_<REG>_<FIELD>_*):
+/// CONFIG's fraction widths are COS_FRAC_BITS and OUT_FRAC_BITS, like RGB_BITS beside
+/// them, since they hold a number of bits, not a fraction. Enumerated values are named
+/// the same way, after the C++ enumerator's to_string ("device-energy" → DEVICE_ENERGY).
 #pragma once
 
 #include <cstddef>

@@ -1,10 +1,11 @@
-// The register map of the TLM-2.0 target, written once as a table (VCML style:
-// name, offset, access, reset value, description on one line).
-//
-// Everything else reads this table: the target decodes addresses with it, the
-// driver takes offsets from it, docs/tlm.md prints it (a test keeps them equal).
-// Registers are 32 bits wide; data travels in the host's byte order, as the TLM-2.0
-// generic payload's data array does.
+/// \file
+/// The register map of the TLM-2.0 target, written once as a table (VCML style:
+/// name, offset, access, reset value, description on one line).
+///
+/// Everything else reads this table: the target decodes addresses with it, the
+/// driver takes offsets from it, docs/tlm.md prints it (a test keeps them equal).
+/// Registers are 32 bits wide; data travels in the host's byte order, as the TLM-2.0
+/// generic payload's data array does.
 #pragma once
 
 #include <array>

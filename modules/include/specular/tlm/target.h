@@ -1,8 +1,9 @@
-// The TLM-2.0 face of the device: a 32-bit target socket, the register file of
-// register_map.h, and the `done` interrupt. Two implementations sit behind it
-// (lt_target.h: the bit-accurate core with annotated latency; pin_target.h: a
-// transactor driving the pin-level netlist), so they cannot differ in how the
-// registers behave, only in how an operation is computed and timed.
+/// \file
+/// The TLM-2.0 face of the device: a 32-bit target socket, the register file of
+/// register_map.h, and the `done` interrupt. Two implementations sit behind it
+/// (lt_target.h: the bit-accurate core with annotated latency; pin_target.h: a
+/// transactor driving the pin-level netlist), so they cannot differ in how the
+/// registers behave, only in how an operation is computed and timed.
 #pragma once
 
 #include <array>

@@ -1,13 +1,14 @@
-// The exp2 unit (rtl/exp2_unit.v): 2^x for x ≤ 0, the usual hardware exp2 (Tang, ACM
-// TOMS 15(2), 1989; Oberman and Siu, "A high-performance area-efficient multifunction
-// interpolator", ARITH-17, 2005; Piñeiro, Oberman, Muller and Bruguera, IEEE Trans.
-// Computers 54(3), 2005): x splits into its integer part, a right shift, and its fraction
-// f ∈ [0, 1), whose 2^f ∈ [1, 2) comes from a table of 2^(i/2^A) and a linear
-// interpolation between neighbouring words. It is what a GPU's pow(c, n) does with
-// the log2 it already has: c^n = 2^(n·log2 c).
-//
-// A block two variants could share, so it lives in a file pair of its own; its words are
-// written by specular_romgen into exp2.hex (one source for the table: this class).
+/// \file
+/// The exp2 unit (rtl/exp2_unit.v): 2^x for x ≤ 0, the usual hardware exp2 (Tang, ACM
+/// TOMS 15(2), 1989; Oberman and Siu, "A high-performance area-efficient multifunction
+/// interpolator", ARITH-17, 2005; Piñeiro, Oberman, Muller and Bruguera, IEEE Trans.
+/// Computers 54(3), 2005): x splits into its integer part, a right shift, and its fraction
+/// f ∈ [0, 1), whose 2^f ∈ [1, 2) comes from a table of 2^(i/2^A) and a linear
+/// interpolation between neighbouring words. It is what a GPU's pow(c, n) does with
+/// the log2 it already has: c^n = 2^(n·log2 c).
+///
+/// A block two variants could share, so it lives in a file pair of its own; its words are
+/// written by specular_romgen into exp2.hex (one source for the table: this class).
 #pragma once
 
 #include <cstdint>

@@ -1,14 +1,15 @@
-// Design variants (issue 26, docs/design_space.md): other ways to compute the device's
-// K(n)·cos^n λ·{R, G, B}, each a bit-accurate model of its own Verilog top in rtl/,
-// side by side with the patent's device.
-//
-// Every variant takes the device's operands (register 1's cos code, n, R, G, B at the
-// default widths) and returns two things in the device's own formats, so that errors,
-// outputs and silicon compare like for like:
-//   - lobe: K(n)·cos^n λ as multiplier 39's output (Formats::norm, S10.20 by default),
-//   - out:  pins 24–26 (Formats::out, S18.13), lobe × R, G, B as multipliers 13–15 do.
-// Each variant reuses arith.h's block functions where its arithmetic is the device's
-// (ROM 5's log2, ROM 38's K(n), multipliers 39 and 13–15): a block's arithmetic lives once.
+/// \file
+/// Design variants (issue 26, docs/design_space.md): other ways to compute the device's
+/// K(n)·cos^n λ·{R, G, B}, each a bit-accurate model of its own Verilog top in rtl/,
+/// side by side with the patent's device.
+///
+/// Every variant takes the device's operands (register 1's cos code, n, R, G, B at the
+/// default widths) and returns two things in the device's own formats, so that errors,
+/// outputs and silicon compare like for like:
+///   - lobe: K(n)·cos^n λ as multiplier 39's output (Formats::norm, S10.20 by default),
+///   - out:  pins 24–26 (Formats::out, S18.13), lobe × R, G, B as multipliers 13–15 do.
+/// Each variant reuses arith.h's block functions where its arithmetic is the device's
+/// (ROM 5's log2, ROM 38's K(n), multipliers 39 and 13–15): a block's arithmetic lives once.
 #pragma once
 
 #include <array>

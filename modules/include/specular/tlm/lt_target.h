@@ -14,9 +14,13 @@ namespace specular {
 /// tlm_utils::tlm_quantumkeeper. No allocation, no formatting per transaction.
 class SpecularLtTarget : public SpecularTarget {
  public:
+  /// A target computing with a Core built from `config`; `clock_period` (10 ns by
+  /// default; osu018_clock_period() for silicon's) scales the annotated latency.
+  /// Throws std::invalid_argument as SpecularTarget's constructor and Core's do.
   explicit SpecularLtTarget(sc_core::sc_module_name name, const Config& config = Config{},
                             const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS));
 
+  /// The core that computes every operation.
   const Core& core() const { return core_; }
 
  private:

@@ -70,6 +70,9 @@ struct PinTargetSettings {
 /// with the annotated delay (PinDelay: keep, the default, or consume).
 class SpecularPinTarget : public SpecularTarget {
  public:
+  /// A transactor over a SpecularDevice built from `config`, with `settings` (clock
+  /// period, real views, delay policy). Throws std::invalid_argument as
+  /// SpecularTarget's constructor does.
   SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
                     const PinTargetSettings& settings);
   /// The positional form, as before; `delay` now defaults to keep, as the settings do.
@@ -77,7 +80,8 @@ class SpecularPinTarget : public SpecularTarget {
                              const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS),
                              bool real_views = false, PinDelay delay = PinDelay::keep);
 
-  PinHarness harness;
+  PinHarness harness;  ///< the pin-level device and its driver (on-demand clock)
+  /// What b_transport does with the annotated delay (PinTargetSettings::delay).
   PinDelay delay_policy() const { return delay_policy_; }
 
  protected:

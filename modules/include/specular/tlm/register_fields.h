@@ -29,7 +29,7 @@ namespace specular {
 
 /// Which enumeration a field's values come from (none: a plain number).
 enum class FieldValues : std::uint8_t {
-  none,
+  none,           ///< a plain number
   error_cause,    ///< ErrorCause: STATUS[15:8]
   normalisation,  ///< Normalisation: CONFIG[1:0]
   saturation,     ///< Saturation: CONFIG[4]
@@ -38,16 +38,17 @@ enum class FieldValues : std::uint8_t {
 
 /// One bit field of a register.
 struct FieldInfo {
-  Reg reg;
+  Reg reg;           ///< the register holding the field
   const char* name;  ///< upper case, a C identifier
   unsigned shift;    ///< lowest bit
   unsigned width;    ///< bits
   /// read_only, read_write; write_1_to_clear: writing 1 clears it; self_clearing: a
   /// write of 1 acts, the field reads 0.
   Access access;
-  FieldValues values;
-  const char* description;
+  FieldValues values;       ///< the enumeration of its values, or none
+  const char* description;  ///< one line for the docs and the firmware header
 
+  /// The field's bits in place: ((1 << width) − 1) << shift.
   constexpr std::uint32_t mask() const {
     return (width >= 32 ? 0xFFFFFFFFu : ((1u << width) - 1u)) << shift;
   }
@@ -73,6 +74,7 @@ inline constexpr FieldInfo register_fields[] = {
     {Reg::control, "START",         0,                                1,  Access::self_clearing,    FieldValues::none,          "Write 1: run one operation on COS, N, R, G, B; reads 0; any other bit is refused"},
     // clang-format on
 };
+/// Rows of register_fields.
 constexpr std::size_t field_count = sizeof register_fields / sizeof register_fields[0];
 
 /// The fields of `reg`, lowest bit first: its rows of register_fields, or one 32-bit
@@ -94,7 +96,7 @@ constexpr std::uint32_t value_count(FieldValues values) {
 /// One value of an enumerated field.
 struct FieldValue {
   std::string name;  ///< upper case, a C identifier (e.g. "DEVICE_ENERGY")
-  std::uint32_t value;
+  std::uint32_t value;      ///< the field's code for it
   std::string description;  ///< error causes say why; a policy's is empty (its name says it)
 };
 

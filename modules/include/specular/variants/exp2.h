@@ -16,6 +16,8 @@
 namespace specular {
 namespace variants {
 
+/// Variant "exp2": cos^n = 2^(n·log2 cos) through ROM 5, multiplier 6 and the exp2
+/// unit (Exp2Table), then the device's tail (see this file's description).
 class Exp2Variant final : public Variant {
  public:
   /// Takes the default widths, constants patent (s = 1) and the normalisations patent,
@@ -31,6 +33,7 @@ class Exp2Variant final : public Variant {
   /// shader's pow(0, n) = exp2(n·log2 0) = exp2(−∞) = 0 (ROM 5 reads log2 0 as −16, which
   /// would leave 2^−16n: 2^−16·K(1) = 33 lobe LSBs at n = 1).
   code_t cos_pow_n(const Operands& in) const { return in.cos == 0 ? 0 : exp2_.pow2(exponent(in)); }
+  /// The exp2 unit's table and arithmetic.
   const Exp2Table& exp2_table() const { return exp2_; }
 
  private:

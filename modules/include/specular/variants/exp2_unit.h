@@ -31,13 +31,16 @@ struct Exp2Organisation {
 /// 2^x on integer codes: the table and the arithmetic of rtl/exp2_unit.v, bit for bit.
 class Exp2Table {
  public:
+  /// Fills the 2^addr_bits words for `organisation`.
   explicit Exp2Table(const Exp2Organisation& organisation = Exp2Organisation{});
 
   /// 2^x for an x code with x_frac_bits fraction bits, as a code with out_frac_bits,
   /// rounded half up; x ≥ 0 reads as 0 (result 1.0: the unit's domain is x ≤ 0).
+  /// \verbatim
   ///   f = x mod 1, top A bits of f = address i, the other L = x_frac − A bits = t;
   ///   m = v_i + round(d_i·t / 2^L)       (2^f on V fraction bits, v_i = 2^(i/2^A))
   ///   result = round(m / 2^(V − out_frac − floor(x)))   (the integer part: a shift)
+  /// \endverbatim
   code_t pow2(code_t x) const {
     if (x >= 0) x = 0;
     const code_t k = -(x >> org_.x_frac_bits);  // −floor(x) ≥ 0
@@ -57,10 +60,13 @@ class Exp2Table {
   /// Word i = {v_i − 2^V (V bits), d_i = v_{i+1} − v_i (delta_bits)}, v_i =
   /// round(2^(i/2^A)·2^V), v_{2^A} = 2^(V+1): the image specular_romgen writes.
   const std::vector<std::uint64_t>& words() const { return words_; }
+  /// Bits of a word's d_i field: those of the largest d_i.
   int delta_bits() const { return delta_bits_; }
+  /// Bits of a whole word: V + delta_bits().
   int word_bits() const { return org_.value_frac_bits + delta_bits_; }
   /// The largest shift the hardware applies: V + 2 (any larger one also gives 0).
   int max_shift() const { return max_shift_; }
+  /// The organisation the table was built for.
   const Exp2Organisation& organisation() const { return org_; }
 
  private:

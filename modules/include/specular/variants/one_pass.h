@@ -7,9 +7,11 @@
 /// results equal the patent's device on every operation, under every policy it takes.
 ///
 /// Two Verilog tops share this model (the same bits, different registers):
+/// \verbatim
 ///   one_pass            rtl/specular_one_pass.v: both passes and the tail in one clock;
 ///   one_pass_pipelined  rtl/specular_one_pass_pipelined.v: a register between the passes
 ///                       and before each multiplier of the tail.
+/// \endverbatim
 #pragma once
 
 #include <string_view>
@@ -20,6 +22,8 @@
 namespace specular {
 namespace variants {
 
+/// Variants "one_pass" and "one_pass_pipelined": the device's two passes in series on
+/// two ROMs, one result per clock; the patent's device's bits.
 class OnePass final : public Variant {
  public:
   /// Takes every policy of `config` (constants, normalisation, saturation); throws

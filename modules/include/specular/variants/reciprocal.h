@@ -17,6 +17,7 @@
 namespace specular {
 namespace variants {
 
+/// 1/m by a 1024-word table and one Newton–Raphson step (rtl/reciprocal_nr.v).
 class ReciprocalNr {
  public:
   static constexpr int mantissa_bits = 26;    ///< the divisor m as U1.25, leading one at bit 25
@@ -26,6 +27,7 @@ class ReciprocalNr {
   static constexpr int frac_bits = 26;        ///< the result y1 ≈ 1/m, U0.26
   static constexpr int bias = 8;              ///< 2^-23 added to y1 (in 2^-26 units)
 
+  /// Fills the table (2^addr_bits words of word_bits).
   ReciprocalNr();
   /// y1 ≈ 2^frac_bits / m for a mantissa code with its leading one at bit 25.
   std::uint64_t reciprocal(std::uint64_t mantissa) const;

@@ -26,6 +26,8 @@ namespace variants {
 /// allowed.
 const Config& schlick_config(const Config& config, std::string_view variant);
 
+/// Variant "schlick": Schlick's x / (n − (n − 1)·x) by ReciprocalNr and a multiplier,
+/// then ROM 38, multiplier 39 and multipliers 13–15.
 class Schlick final : public Variant {
  public:
   /// Throws std::invalid_argument for a configuration it is not built for (schlick_config).

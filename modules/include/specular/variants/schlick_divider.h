@@ -16,6 +16,7 @@
 namespace specular {
 namespace variants {
 
+/// Variant "schlick_divider": Schlick's quotient by a restoring divider, one bit a clock.
 class SchlickDivider final : public Variant {
  public:
   /// Throws std::invalid_argument for a configuration it is not built for (schlick_config).

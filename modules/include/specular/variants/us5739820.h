@@ -16,6 +16,8 @@
 namespace specular {
 namespace variants {
 
+/// Variant "us5739820": cos^n ≈ (1 − (1 − cos)·n/2^k)^(2^k) by k squarings in one
+/// squarer (US 5,739,820), then the device's tail.
 class Us5739820 final : public Variant {
  public:
   /// The squarer's fraction bits: the base 1 − x·n·2^−(16+k) is exact on them

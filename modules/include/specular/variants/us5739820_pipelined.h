@@ -12,6 +12,7 @@
 namespace specular {
 namespace variants {
 
+/// Variant "us5739820_pipelined": Us5739820's bits from ten squarer stages, one start a clock.
 class Us5739820Pipelined final : public Variant {
  public:
   /// Takes and refuses what Us5739820 does (the same std::invalid_argument).

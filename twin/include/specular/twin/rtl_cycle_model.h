@@ -1,6 +1,7 @@
-// The RTL twin as plain C++: rtl/specular_device.v verilated without SystemC and
-// clocked here edge by edge, with the protocol of DeviceHarness (spec §3). No kernel,
-// no sc_signals: the fast cycle-accurate model (docs/rtl.md, docs/performance.md).
+/// \file
+/// The RTL twin as plain C++: rtl/specular_device.v verilated without SystemC and
+/// clocked here edge by edge, with the protocol of DeviceHarness (spec §3). No kernel,
+/// no sc_signals: the fast cycle-accurate model (docs/rtl.md, docs/performance.md).
 #pragma once
 
 #include <cstddef>
@@ -43,6 +44,7 @@ class RtlCycleModel {
   /// Half clock periods simulated since construction.
   std::uint64_t half_periods() const;
 
+  /// The configuration the model was built with.
   const Config& config() const { return config_; }
   /// Whether this model runs a verilation specialised to config() (FIXED_CONFIG = 1).
   bool fixed() const;

@@ -1,7 +1,8 @@
-// What the two RTL twins behind the pin interface share (RtlDevice: the drawn device,
-// RtlSyncDevice: the synchronous variant): the pins, the Config they are verilated for,
-// the one process that evaluates the verilated model, and Verilator's VCD. Each twin
-// adds only its own nets and its verilated class (twin/src/rtl_model.h).
+/// \file
+/// What the two RTL twins behind the pin interface share (RtlDevice: the drawn device,
+/// RtlSyncDevice: the synchronous variant): the pins, the Config they are verilated for,
+/// the one process that evaluates the verilated model, and Verilator's VCD. Each twin
+/// adds only its own nets and its verilated class (twin/src/rtl_model.h).
 #pragma once
 
 #include <memory>
@@ -30,9 +31,13 @@ class RtlDeviceBase : public DevicePins {
  public:
   ~RtlDeviceBase() override;
 
+  /// The configuration the twin was built with.
   const Config& config() const { return config_; }
+  /// The bus formats: the default widths', the only ones the twins are verilated at.
   const Formats& formats() const { return formats_; }
+  /// The code to tie pin 19 to: h in multiplexer 4's format (pin19_code).
   code_t constant_h19() const { return pin19_code(config_); }
+  /// The code to tie pin 20 to: a in register 9's format (pin20_code).
   code_t constant_a20() const { return pin20_code(config_); }
 
   /// The SystemC trace file gets nothing from the twin: its nets are traced by
@@ -58,11 +63,11 @@ class RtlDeviceBase : public DevicePins {
   bool fixed() const;
 
   // ---- what the harness watches (observation outputs both twins have) ----
-  wire select36{"select36"};
-  bus_signal reg1_q{"reg1_q"};
-  bus_signal reg9_q{"reg9_q"};
-  bus_signal rom38_k{"rom38_k"};
-  bus_signal mul39_norm{"mul39_norm"};
+  wire select36{"select36"};            ///< control output 36: multiplexer select
+  bus_signal reg1_q{"reg1_q"};          ///< register 1's output (U1.16)
+  bus_signal reg9_q{"reg9_q"};          ///< register 9's output (S14.22)
+  bus_signal rom38_k{"rom38_k"};        ///< ROM 38's word s·K(n) (U9.16)
+  bus_signal mul39_norm{"mul39_norm"};  ///< multiplier 39's output (S10.20)
 
  protected:
   struct Verilated;  // the verilated model, its VCD writer, the pins' channels (rtl_model.h)

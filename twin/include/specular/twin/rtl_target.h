@@ -1,4 +1,5 @@
-// `rtl`: the TLM target computed by the RTL twin, clocked inside b_transport.
+/// \file
+/// `rtl`: the TLM target computed by the RTL twin, clocked inside b_transport.
 #pragma once
 
 #include <memory>
@@ -21,6 +22,8 @@ class RtlCycleModel;
 /// RTL was verilated at are refused with std::invalid_argument.
 class SpecularRtlTarget : public SpecularTarget {
  public:
+  /// A target over the RTL twin verilated for `config`; `clock_period` scales the
+  /// annotated latency. Throws std::invalid_argument for widths the RTL was not verilated at.
   explicit SpecularRtlTarget(sc_core::sc_module_name name, const Config& config = Config{},
                              const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS));
   ~SpecularRtlTarget() override;

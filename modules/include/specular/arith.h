@@ -15,6 +15,7 @@ namespace specular {
 
 struct Config;  // core.h: ROM 38's contents depend on the whole configuration
 
+/// The per-block arithmetic of Fig. 1 on integer codes (see arith.h).
 namespace arith {
 
 /// The products' width: 64 × 64 bits before rounding. GCC's and Clang's 128-bit integer,

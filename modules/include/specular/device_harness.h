@@ -102,12 +102,12 @@ class DeviceHarness : public sc_core::sc_module {
   /// The period of pin 28, T.
   const sc_core::sc_time& clock_period() const { return period_; }
 
-  /// @{
   /// Called (if set) with an operation's index in its batch just before its pins are
-  /// driven (before_drive), and just after its results were taken at 35↑ (after_done):
-  /// where a trace window opens and closes (specular_tb --trace-ops). Empty: nothing is called.
+  /// driven: where a trace window opens (specular_tb --trace-ops). Empty: nothing is called.
   std::function<void(std::size_t)> before_drive, after_done;
-  /// @}
+  /// \var after_done
+  /// Called (if set) with an operation's index in its batch just after its results were
+  /// taken at 35↑: where a trace window closes. Empty: nothing is called.
 
  private:
   void on_select36();  // pass 1 is in register 9 while select 36 rises

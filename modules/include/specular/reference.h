@@ -9,6 +9,7 @@
 #include "specular/format.h"
 
 namespace specular {
+/// Double-precision references of the patent's formula and the exact lobe (see reference.h).
 namespace reference {
 
 /// log2 cos λ, with log2 0 defined as log2 of the smallest non-zero code, −F

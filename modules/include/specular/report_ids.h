@@ -20,6 +20,7 @@
 #pragma once
 
 namespace specular {
+/// The sc_report message types the model issues (see report_ids.h, docs/misuse.md).
 namespace report {
 
 // ---- pin protocol (ProtocolChecker, inside SpecularDevice; spec §3 "protocol") ----

@@ -40,14 +40,15 @@ class ControlUnit16 : public sc_core::sc_module {
   wire logic_one{"logic_one", true};  ///< the "logic 1" source of Fig. 2
   wire and40_y{"and40_y", true};  ///< idle value: reset_n AND nand45 = 1
   wire inv44_y{"inv44_y", true};  ///< inverter 44's output
-  /// @{
-  /// Flip-flop 41's outputs Q and /Q.
+  /// Flip-flop 41's output Q (start latched).
   wire q41{"q41"}, q41_n{"q41_n", true};
-  /// @}
-  /// @{
-  /// Flip-flop 42's outputs Q and /Q.
+  /// \var q41_n
+  /// Flip-flop 41's output /Q.
+
+  /// Flip-flop 42's output Q (pass 1 pending).
   wire q42{"q42"}, q42_n{"q42_n", true};
-  /// @}
+  /// \var q42_n
+  /// Flip-flop 42's output /Q.
   wire q43_n{"q43_n", true};      ///< flip-flop 43's /Q (its Q is output 36)
   wire nand45_y{"nand45_y", true};  ///< NAND 45's output
 

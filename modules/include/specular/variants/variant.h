@@ -21,6 +21,7 @@
 #include "specular/core.h"
 
 namespace specular {
+/// Design variants: bit-accurate models of other ways to compute the lobe (see variant.h).
 namespace variants {
 
 /// One operation's result: the lobe and pins 24–26 (see above).

@@ -75,7 +75,8 @@ typedef enum specular_wait_mode {
   SPECULAR_WAIT_IRQ = 1   /**< until the interrupt hook ran (specular_irq_notify / _handler) */
 } specular_wait_mode;
 
-/** One device. Fill it with specular_init(); the fields are readable by the caller. */
+/** One IP instance: its base address, bus accessors, wait mode and last refusal. Fill
+ * it with specular_init(); the fields are readable by the caller. */
 typedef struct specular_dev {
   uintptr_t base;           /**< the IP's base address (its window: SPECULAR_MAP_SIZE bytes) */
   specular_bus bus;         /**< read32/write32 NULL: volatile accesses */

@@ -221,8 +221,8 @@ double register9_lobe_integral(const Formats& formats, const Rom5Table& rom5, co
                                code_t pin20_a, code_t n);
 
 // ---- ROM 38: normalisation coefficient K(n) ------------------------------------
-/// s·K(n) for every address 0 .. 2^n_bits − 1 (n = 0 and n > 1000 included: the
-/// same formula), rounded to the ROM word (spec §1). Under `device_energy` the word is
+/// ROM 38's table: s·K(n) for every address 0 to 2^n_bits − 1 (n = 0 and n > 1000
+/// included: the same formula), rounded to the ROM word (spec §1). Under `device_energy` the word is
 /// 1/I(n) (s folds into it). Throws std::invalid_argument naming n and the format if a
 /// word does not fit: ROM 38 is widened, never left to saturate.
 class Rom38Table {
@@ -234,7 +234,7 @@ class Rom38Table {
   Rom38Table(const Formats& formats, Normalisation policy);
   /// The word at address `reg2` (register 2, n): s·K(n) in Formats::rom38.
   code_t k(code_t reg2) const { return words_[static_cast<std::size_t>(reg2) & mask_]; }
-  /// The whole table, address 0 .. 2^n_bits − 1, for reports and tests.
+  /// The whole table, address 0 to 2^n_bits − 1, for reports and tests.
   const std::vector<code_t>& words() const { return words_; }
 
  private:

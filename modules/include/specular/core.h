@@ -67,8 +67,10 @@ struct DefaultFormats {
   static constexpr FixedFormat out{true, 18, 13};    ///< Formats::out: S18.13
 };
 
-/// The device of Fig. 1 as a plain C++ object, bit-accurate and kernel-free: the
-/// datapath's results without the clock (no SystemC needed; link SpecularUnit::core).
+/// The device as a plain C++ object: bit-accurate, no clock, no SystemC.
+///
+/// The datapath of Fig. 1 computed as the netlist computes it, to the bit, without the
+/// clock (no SystemC needed; link SpecularUnit::core).
 ///
 /// Build it once per Config (the ROMs are filled in the constructor), then call
 /// operands() to check and quantise user values and run() for each operation:

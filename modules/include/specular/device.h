@@ -25,8 +25,11 @@
 
 namespace specular {
 
-/// The pin-level device. Pins 19, 20 and 34 are wired constants in the patent (½, 1
-/// and logic 1); they stay ports here (pin 19 carries h, pin 20 carries a: ½ and 1
+/// The pin-level SystemC device: the blocks of Fig. 1 and control unit 16 behind pins
+/// 17–35, wired as the patent draws them.
+///
+/// Pins 19, 20 and 34 are wired constants in the patent (½, 1 and logic 1); they stay
+/// ports here (pin 19 carries h, pin 20 carries a: ½ and 1
 /// only under the patent's constants), and `constant_h19()`, `constant_a20()` give
 /// the codes a harness ties them to (pin19_code, pin20_code of the Config).
 class SpecularDevice : public DevicePins {

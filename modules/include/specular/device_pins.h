@@ -9,7 +9,7 @@
 
 namespace specular {
 
-/// The device's ports, pins 17–35 of Fig. 1 with the spec's numbers; a device derives
+/// The device's ports: pins 17–35 of Fig. 1 with the spec's numbers. A device derives
 /// from it and binds them to its blocks. Formats: Formats (format.h), U1.16 cos, U10 n,
 /// U8 R, G, B in and S18.13 out by default.
 class DevicePins : public sc_core::sc_module {

@@ -8,7 +8,7 @@
 
 namespace specular {
 
-/// Gate-level netlist of Fig. 2, exactly the equations of spec §3:
+/// Control unit 16: the gate-level netlist of Fig. 2, exactly the equations of spec §3:
 /// \verbatim
 ///   inv44 = NOT clk;  and40 = rst_n AND nand45 → R of 41
 ///   dff41: C = start, D = 1;  dff42: C = inv44, D = Q41;  dff43: C = inv44, D = Q42

@@ -6,8 +6,8 @@
 
 namespace specular {
 
-/// pin 20 (1.0) + inverter 7 + carry-in 34 = 1 − product; saturates at 0 under
-/// Saturation::clamp (spec, Decision "negative results").
+/// Combinational adder 8: pin 20 (1.0) + inverter 7 + carry-in 34 = 1 − product;
+/// saturates at 0 under Saturation::clamp (spec, Decision "negative results").
 class Adder8 : public sc_core::sc_module {
  public:
   bus_in a20{"a20"};  ///< pin 20: the constant a (1.0 under the patent's constants), S14.22

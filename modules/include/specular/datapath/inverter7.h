@@ -6,7 +6,7 @@
 
 namespace specular {
 
-/// Bitwise NOT of multiplier 6's product: with carry-in 34, adder 8 subtracts.
+/// Inverter block 7: bitwise NOT of multiplier 6's product: with carry-in 34, adder 8 subtracts.
 class Inverter7 : public sc_core::sc_module {
  public:
   bus_in product{"product"};  ///< multiplier 6's product, S14.22

@@ -6,7 +6,7 @@
 
 namespace specular {
 
-/// in0 = register 1 (cos λ), in1 = register 9; select = control-unit output 36.
+/// Multiplexer 3: in0 = register 1 (cos λ), in1 = register 9; select = control-unit output 36.
 class Multiplexer3 : public sc_core::sc_module {
  public:
   bus_in reg1{"reg1"};  ///< in0: register 1 (cos λ, U1.16)

@@ -6,7 +6,8 @@
 
 namespace specular {
 
-/// in0 = register 2 (n), in1 = pin 19 (the constant ½); select = control-unit output 36.
+/// Multiplexer 4: in0 = register 2 (n), in1 = pin 19 (the constant ½); select =
+/// control-unit output 36.
 class Multiplexer4 : public sc_core::sc_module {
  public:
   bus_in reg2{"reg2"};  ///< in0: register 2 (n)

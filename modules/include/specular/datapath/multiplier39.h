@@ -6,8 +6,8 @@
 
 namespace specular {
 
-/// K(n)·A, feeding multipliers 13–15. Saturates silently: between the two passes
-/// register 9 holds the pass-1 value (up to ~16 000), which is not a result.
+/// Multiplier 39: K(n)·A, feeding multipliers 13–15. Saturates silently: between the
+/// two passes register 9 holds the pass-1 value (up to ~16 000), which is not a result.
 class Multiplier39 : public sc_core::sc_module {
  public:
   bus_in reg9{"reg9"};  ///< register 9 (A after pass 2)

@@ -6,7 +6,7 @@
 
 namespace specular {
 
-/// log2 × (n in pass 1, ½ in pass 2), rounded to adder 8's format.
+/// Multiplier 6: log2 × (n in pass 1, ½ in pass 2), rounded to adder 8's format.
 class Multiplier6 : public sc_core::sc_module {
  public:
   bus_in log2{"log2"};  ///< ROM 5's output (S5.22)

@@ -6,7 +6,7 @@
 
 namespace specular {
 
-/// Multiplier 39 × register 10, 11 or 12 → pin 24, 25 or 26.
+/// Multipliers 13–15: multiplier 39 × register 10, 11 or 12 → pin 24, 25 or 26.
 class MultiplierRgb : public sc_core::sc_module {
  public:
   bus_in norm{"norm"};  ///< multiplier 39's output (S10.20)

@@ -6,8 +6,8 @@
 
 namespace specular {
 
-/// Captures `d` on the rising edge of its write strobe (spec: "written by the leading
-/// edge"); holds its power-on value until the first write.
+/// Registers 1, 2, 9 and 10–12: captures `d` on the rising edge of its write strobe
+/// (spec: "written by the leading edge"); holds its power-on value until the first write.
 class Register : public sc_core::sc_module {
  public:
   bus_in d{"d"};  ///< data in

@@ -7,7 +7,7 @@
 
 namespace specular {
 
-/// K(n) addressed by register 2; contents set by the normalisation policy.
+/// ROM 38: K(n) addressed by register 2; contents set by the normalisation policy.
 class Rom38 : public sc_core::sc_module {
  public:
   bus_in reg2{"reg2"};  ///< address: register 2 (n)

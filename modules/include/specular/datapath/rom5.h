@@ -7,7 +7,7 @@
 
 namespace specular {
 
-/// log2 of multiplexer 3's bus: leading-one detector + mantissa ROM (arith::Rom5Table).
+/// ROM 5: log2 of multiplexer 3's bus: leading-one detector + mantissa ROM (arith::Rom5Table).
 class Rom5 : public sc_core::sc_module {
  public:
   bus_in address{"address"};  ///< multiplexer 3's bus (S14.22)

@@ -33,6 +33,9 @@ class TransportError : public std::runtime_error {
   ErrorCause cause_;
 };
 
+/// Software's view of a target from a SystemC initiator: registers, bursts and whole
+/// operations, each access checked (TransportError on a refusal).
+///
 /// Register accesses through an initiator port (e.g. a tlm_utils::simple_initiator_socket)
 /// with loosely-timed temporal decoupling: every transaction runs at the quantum
 /// keeper's local time, and the keeper synchronises when its quantum is used up.

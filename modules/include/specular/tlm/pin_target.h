@@ -44,6 +44,9 @@ struct PinTargetSettings {
   PinDelay delay = PinDelay::keep;
 };
 
+/// The `pin` target: SpecularTarget's register file computed by the pin-level device,
+/// cycle-accurate. See SpecularTarget for the registers, the bus checks and done_irq.
+///
 /// Drives the device of Fig. 1 through PinHarness, as a TLM-to-pin bridge does
 /// (compare Xilinx libsystemctlm-soc's tlm2apb-bridge). Cycle-accurate: an operation
 /// first waits out the initiator's annotated delay (PinDelay::consume; with

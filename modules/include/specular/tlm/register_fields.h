@@ -81,7 +81,7 @@ constexpr std::size_t field_count = sizeof register_fields / sizeof register_fie
 /// field VALUE with the row's access and description.
 std::vector<FieldInfo> fields_of(Reg reg);
 
-/// How many values an enumeration has (codes 0 .. count-1; 0 for none).
+/// How many values an enumeration has (codes 0 to count-1; 0 for none).
 constexpr std::uint32_t value_count(FieldValues values) {
   switch (values) {
     case FieldValues::none: return 0;
@@ -100,7 +100,7 @@ struct FieldValue {
   std::string description;  ///< error causes say why; a policy's is empty (its name says it)
 };
 
-/// The values of an enumerated field, codes 0 .. value_count(values) - 1 in order;
+/// The values of an enumerated field, codes 0 to value_count(values) - 1 in order;
 /// empty for FieldValues::none.
 std::vector<FieldValue> field_values(FieldValues values);
 

@@ -85,7 +85,7 @@ enum class ErrorCause : std::uint8_t {
 const char* to_string(ErrorCause cause);
 /// What the cause means, for docs and error messages.
 const char* describe(ErrorCause cause);
-/// ErrorCause's values: codes 0 .. 10.
+/// ErrorCause's values: codes 0 to 10.
 constexpr std::uint8_t error_cause_count = 11;
 
 /// One row of the register map.

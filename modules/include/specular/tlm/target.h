@@ -51,9 +51,10 @@ namespace specular {
 class SpecularTarget : public sc_core::sc_module {
  public:
   /// The bus: bind an initiator socket or a router's; 32-bit data, the map of
-  /// register_map.h at offsets 0 .. map_size − 1.
+  /// register_map.h at offsets 0 to map_size − 1.
   tlm_utils::simple_target_socket<SpecularTarget, 32> socket;
-  /// The interrupt: a level, high while STATUS.DONE is set (see above); may stay unbound.
+  /// The interrupt: a level, high while STATUS.DONE is set (see SpecularTarget); may
+  /// stay unbound.
   sc_core::sc_out<bool> done_irq;
 
   /// Called at each edge of done_irq with its new level, from the process that drives

@@ -17,7 +17,7 @@ namespace specular {
 namespace variants {
 
 /// Variant "exp2": cos^n = 2^(n·log2 cos) through ROM 5, multiplier 6 and the exp2
-/// unit (Exp2Table), then the device's tail (see this file's description).
+/// unit (Exp2Table), then the device's tail (see exp2.h).
 class Exp2Variant final : public Variant {
  public:
   /// Takes the default widths, constants patent (s = 1) and the normalisations patent,

@@ -24,7 +24,7 @@ namespace specular {
 /// Design variants: bit-accurate models of other ways to compute the lobe (see variant.h).
 namespace variants {
 
-/// One operation's result: the lobe and pins 24–26 (see above).
+/// One operation's result: the lobe and pins 24–26 (see variant.h).
 struct VariantResult {
   code_t lobe = 0;              ///< K(n)·cos^n λ, multiplier 39's format (S10.20)
   std::array<code_t, 3> out{};  ///< pins 24–26: lobe × R, G, B (S18.13)

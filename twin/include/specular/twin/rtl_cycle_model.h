@@ -13,7 +13,8 @@
 
 namespace specular {
 
-/// Clocks the verilated device one half period at a time. A start rises with a
+/// The RTL twin as a plain C++ cycle model: clocks the verilated device one half period
+/// at a time. A start rises with a
 /// rising clock edge; cos λ is presented with it, and n, R, G, B (strobes 30–33) a
 /// quarter period before it when they change. Results are sampled at the rising edge
 /// of 35, register 1 and register 9's pass-1 value at the rising edge of select 36,

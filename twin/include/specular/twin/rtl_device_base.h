@@ -14,7 +14,8 @@
 
 namespace specular {
 
-/// Pins 17–35 (DevicePins), as SpecularDevice has them. Inside, the
+/// What the two RTL twins behind the pins share: pins 17–35 (DevicePins), as
+/// SpecularDevice has them. Inside, the
 /// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to the
 /// input pins, that copies the pins into the model, evaluates it and writes the
 /// outputs that changed back, sign-extending the signed buses. One process activation per input

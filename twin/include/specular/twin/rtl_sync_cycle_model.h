@@ -14,7 +14,8 @@
 
 namespace specular {
 
-/// Clocks the verilated synchronous device one half period at a time. Start (27),
+/// The synchronous variant as a plain C++ cycle model: clocks the verilated device one
+/// half period at a time. Start (27),
 /// pin 17 and, when n, R, G, B change, pins 18, 21–23 with their loads 30–33 are levels
 /// set a quarter period before the start edge and (start and loads) cleared a quarter
 /// period after it. Register 1 and register 9's pass 1 are sampled at the rising edge

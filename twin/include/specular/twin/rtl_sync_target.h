@@ -13,6 +13,9 @@ namespace specular {
 
 class RtlSyncCycleModel;
 
+/// The `rtl-sync` target: SpecularTarget's register file computed by the synchronous
+/// variant's RTL, clocked inside b_transport.
+///
 /// The same register file as `lt`, `pin` and `rtl` (SpecularTarget), computed by the
 /// verilated synchronous variant (RtlSyncCycleModel): each START or BATCH_COS write
 /// clocks it inside b_transport and annotates the periods it took from the first start

@@ -11,6 +11,9 @@ namespace specular {
 
 class RtlCycleModel;
 
+/// The `rtl` target: SpecularTarget's register file computed by the RTL twin, clocked
+/// inside b_transport.
+///
 /// The same register file as `lt` and `pin` (SpecularTarget), computed by the
 /// verilated RTL (RtlCycleModel: plain C++, no SystemC process): each START or
 /// BATCH_COS write clocks the twin edge by edge, inside b_transport, as the pin harness

@@ -103,7 +103,8 @@ class DeviceHarness : public sc_core::sc_module {
   const sc_core::sc_time& clock_period() const { return period_; }
 
   /// Called (if set) with an operation's index in its batch just before its pins are
-  /// driven: where a trace window opens (specular_tb --trace-ops). Empty: nothing is called.
+  /// driven: where a trace window opens (`specular_tb --trace-ops`). Empty: nothing is
+  /// called.
   std::function<void(std::size_t)> before_drive, after_done;
   /// \var after_done
   /// Called (if set) with an operation's index in its batch just after its results were

@@ -20,7 +20,7 @@ namespace specular {
 /// The rules, with a start edge at t0 on a rising clock edge and period T (spec timing
 /// table: Q41 at t0, Q42 at t0+T/2, pass 1 at t0+T, Q43 at t0+3T/2, pass 2 at t0+2T,
 /// 35↑ at t0+5T/2):
-/// \verbatim
+/// \code{.unparsed}
 ///   start-while-busy   start while Q41 or Q42 is set or AND 40 holds 41 in reset
 ///                      (t0 < t < t0+3T/2): the edge is lost or merged.
 ///   start-too-soon     start accepted but less than 2 T after the previous start
@@ -40,7 +40,7 @@ namespace specular {
 ///   no-done            pin 28 had edges after a start, but 35 did not rise within
 ///                      4 T: the clock stopped or slowed mid-operation, or the
 ///                      control unit is locked, until the next reset.
-/// \endverbatim
+/// \endcode
 ///
 /// Cost: a handful of process activations per operation (start, done, strobes, one
 /// timed watchdog). When pin 28 is bound to an sc_clock, its edges are computed from

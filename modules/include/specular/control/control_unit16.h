@@ -9,12 +9,12 @@
 namespace specular {
 
 /// Control unit 16: the gate-level netlist of Fig. 2, exactly the equations of spec §3:
-/// \verbatim
+/// \code{.unparsed}
 ///   inv44 = NOT clk;  and40 = rst_n AND nand45 → R of 41
 ///   dff41: C = start, D = 1;  dff42: C = inv44, D = Q41;  dff43: C = inv44, D = Q42
 ///   nand45 = NAND(/Q43, Q42, clk);  nand46 = NAND(clk, /Q42, Q43)
 ///   nand47 = NAND(nand45, nand46);  36 = Q43, 37 = nand47, 35 = nand46
-/// \endverbatim
+/// \endcode
 class ControlUnit16 : public sc_core::sc_module {
  public:
   wire_in start{"start"};      ///< input 1 ← pin 27

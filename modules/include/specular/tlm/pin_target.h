@@ -30,7 +30,7 @@ enum class PinDelay : std::uint8_t {
 /// "keep" or "consume".
 const char* to_string(PinDelay delay);
 /// PinDelay from "keep" or "consume"; throws std::invalid_argument naming the value and
-/// the allowed ones (for options such as specular_tb's and soc_platform's --pin-delay).
+/// the allowed ones (for options such as specular_tb's and soc_platform's `--pin-delay`).
 PinDelay pin_delay_from_string(const std::string& text);
 
 /// SpecularPinTarget's configuration beyond the device's Config (issue 35): set its

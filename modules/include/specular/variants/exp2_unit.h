@@ -36,11 +36,11 @@ class Exp2Table {
 
   /// 2^x for an x code with x_frac_bits fraction bits, as a code with out_frac_bits,
   /// rounded half up; x ≥ 0 reads as 0 (result 1.0: the unit's domain is x ≤ 0).
-  /// \verbatim
+  /// \code{.unparsed}
   ///   f = x mod 1, top A bits of f = address i, the other L = x_frac − A bits = t;
   ///   m = v_i + round(d_i·t / 2^L)       (2^f on V fraction bits, v_i = 2^(i/2^A))
   ///   result = round(m / 2^(V − out_frac − floor(x)))   (the integer part: a shift)
-  /// \endverbatim
+  /// \endcode
   code_t pow2(code_t x) const {
     if (x >= 0) x = 0;
     const code_t k = -(x >> org_.x_frac_bits);  // −floor(x) ≥ 0

@@ -7,11 +7,11 @@
 /// results equal the patent's device on every operation, under every policy it takes.
 ///
 /// Two Verilog tops share this model (the same bits, different registers):
-/// \verbatim
+/// \code{.unparsed}
 ///   one_pass            rtl/specular_one_pass.v: both passes and the tail in one clock;
 ///   one_pass_pipelined  rtl/specular_one_pass_pipelined.v: a register between the passes
 ///                       and before each multiplier of the tail.
-/// \endverbatim
+/// \endcode
 #pragma once
 
 #include <string_view>

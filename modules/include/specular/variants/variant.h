@@ -34,7 +34,7 @@ struct VariantResult {
 class Variant {
  public:
   virtual ~Variant() = default;
-  /// The registry's name (specular_tb --variant NAME, the Verilog top specular_NAME).
+  /// The registry's name (`specular_tb --variant NAME`, the Verilog top specular_NAME).
   virtual std::string_view name() const = 0;
   /// One operation on operands from Core::operands() (codes on their buses).
   virtual VariantResult run(const Operands& in) const = 0;

@@ -48,14 +48,14 @@ class RtlDeviceBase : public DevicePins {
   /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`:
   /// called before sc_start, from the start of simulation on; called during the
   /// simulation (after allow_tracing()), from now on, until close_vcd() — a window
-  /// (specular_tb --trace-ops, --trace-failures). std::logic_error otherwise.
+  /// (`specular_tb --trace-ops`, `--trace-failures`). std::logic_error otherwise.
   /// A name ending in ".fst" gets GTKWave's FST, written by Verilator (the model
-  /// verilated with --trace-fst); during the simulation, only in the format
+  /// verilated with `--trace-fst`); during the simulation, only in the format
   /// allow_tracing() chose.
   void open_vcd(const std::string& path);
   /// Before sc_start: let open_vcd() be called later, during the simulation (the pins
   /// a trace shows as they change are made to wake the model from the start), in FST
-  /// if `fst` (the model verilated with --trace-fst is used from the start), else VCD.
+  /// if `fst` (the model verilated with `--trace-fst` is used from the start), else VCD.
   void allow_tracing(bool fst = false);
   /// Writes the last instant and closes the file open_vcd() opened (if any).
   void close_vcd();

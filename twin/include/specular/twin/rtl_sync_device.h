@@ -1,7 +1,7 @@
 /// \file
 /// The synchronous variant behind the pin interface: rtl/specular_device_sync.v,
 /// verilated into C++ (traced) and evaluated from this SystemC module, so that
-/// DeviceHarness (with the variant's protocol) and specular_tb --model rtl-sync drive it
+/// DeviceHarness (with the variant's protocol) and `specular_tb --model rtl-sync` drive it
 /// as they drive the drawn device's twin (RtlDevice).
 #pragma once
 
@@ -35,7 +35,7 @@ class RtlSyncDevice : public RtlDeviceBase {
   static std::unique_ptr<Verilated> make_model(const Config& config);
 };
 
-/// The harness of the synchronous variant: specular_tb --model rtl-sync.
+/// The harness of the synchronous variant: `specular_tb --model rtl-sync`.
 using RtlSyncHarness = DeviceHarness<RtlSyncDevice>;
 extern template class DeviceHarness<RtlSyncDevice>;  // instantiated in rtl_sync_device.cpp
 

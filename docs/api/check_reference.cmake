@@ -4,13 +4,14 @@
 # Doxygen 1.9.4 does not warn about an undocumented enumerator, namespace or file (and
 # a file without a comment hides its macros and C functions from the warnings), so the
 # check also reads Doxygen's XML and fails on each of those, naming it.
-#   cmake -DDOXYGEN=<doxygen> -DDOXYFILE=<build>/docs/api/Doxyfile -DRUNS_DIR=<dir> -P check_reference.cmake
+#   cmake -DDOXYGEN=<doxygen> -DDOXYFILE=<build>/docs/api/Doxyfile -DRUNS_DIR=<dir> \
+#         -P check_reference.cmake
 # Each run writes into a folder of its own under RUNS_DIR (build tree), removed when the
 # run passes and kept, named in the message, when it fails.
 if(NOT DOXYGEN OR DOXYGEN MATCHES "NOTFOUND$")
   message(FATAL_ERROR "api_reference_complete: doxygen not found on PATH, so the API "
-          "reference was not checked. Install Debian's package doxygen (bash scripts/setup.sh) "
-          "and configure again.")
+          "reference was not checked. Install Debian's package doxygen "
+          "(bash scripts/setup.sh) and configure again.")
 endif()
 if(NOT EXISTS "${DOXYFILE}")
   message(FATAL_ERROR "api_reference_complete: no Doxyfile at '${DOXYFILE}' (configure again)")
@@ -41,7 +42,9 @@ string(REGEX MATCHALL "[^\n]*(warning|error):[^\n]*" warnings "${out}\n${err}")
 
 # What Doxygen does not warn about, from its XML: a compound's own description is the
 # last one before </compounddef>; an enumerator's follows its name (and initializer).
-set(empty_doc "<briefdescription>[ \n]*</briefdescription>[ \n]*<detaileddescription>[ \n]*</detaileddescription>")
+set(empty_doc "<briefdescription>[ \n]*</briefdescription>[ \n]*"
+              "<detaileddescription>[ \n]*</detaileddescription>")
+string(CONCAT empty_doc ${empty_doc})
 file(GLOB compounds "${run_dir}/xml/namespace*.xml" "${run_dir}/xml/*_8h.xml")
 foreach(xml IN LISTS compounds)
   file(READ "${xml}" text)
@@ -58,10 +61,13 @@ foreach(xml IN LISTS compounds)
   # A namespace only named in a declaration (sc_core) is "(generated)": not ours.
   if(NOT where STREQUAL "(generated)" AND
      text MATCHES "${empty_doc}[ \n]*<location [^>]*/>[ \n]*</compounddef>")
-    list(APPEND warnings "${where}: warning: ${kind} ${name} is not documented (a /// \\file or namespace comment)")
+    string(CONCAT line "${where}: warning: ${kind} ${name} is not documented "
+           "(a /// \\file or namespace comment)")
+    list(APPEND warnings "${line}")
   endif()
   # Each enum (its text holds no "</m" before its </memberdef>), then its bare values.
-  string(REGEX MATCHALL "<memberdef kind=\"enum\"([^<]|<[^/]|</[^m])*</memberdef>" enums "${text}")
+  string(REGEX MATCHALL "<memberdef kind=\"enum\"([^<]|<[^/]|</[^m])*</memberdef>" enums
+         "${text}")
   foreach(enum IN LISTS enums)
     string(REGEX MATCH "<name>([^<]*)</name>" ignored "${enum}")  # the enum's: first
     set(enum_name "${CMAKE_MATCH_1}")
@@ -70,11 +76,13 @@ foreach(xml IN LISTS compounds)
     endif()
     string(REGEX MATCH "<location file=\"([^\"]*)\" line=\"([0-9]+)\"" ignored "${enum}")
     set(enum_at "${CMAKE_MATCH_1}:${CMAKE_MATCH_2}")
-    string(REGEX MATCHALL "<enumvalue [^>]*>[ \n]*<name>[^<]*</name>[ \n]*(<initializer>([^<]|<[^/]|</[^i])*</initializer>[ \n]*)?${empty_doc}"
+    set(initializer "(<initializer>([^<]|<[^/]|</[^i])*</initializer>[ \n]*)?")
+    string(REGEX MATCHALL "<enumvalue [^>]*>[ \n]*<name>[^<]*</name>[ \n]*${initializer}${empty_doc}"
            bare "${enum}")
     foreach(value IN LISTS bare)
       string(REGEX MATCH "<name>([^<]*)</name>" value "${value}")
-      list(APPEND warnings "${enum_at}: warning: enumerator ${CMAKE_MATCH_1} of enum ${enum_name} is not documented")
+      list(APPEND warnings
+           "${enum_at}: warning: enumerator ${CMAKE_MATCH_1} of enum ${enum_name} is not documented")
     endforeach()
   endforeach()
 endforeach()
@@ -90,5 +98,6 @@ if(NOT EXISTS "${run_dir}/html/index.html")
   message(FATAL_ERROR "api_reference_complete: doxygen passed but wrote no "
           "${run_dir}/html/index.html")
 endif()
-message(STATUS "api_reference_complete: no warning; every public entity of the installed headers is documented")
+message(STATUS "api_reference_complete: no warning; every public entity of the installed "
+               "headers is documented")
 file(REMOVE_RECURSE "${run_dir}")

@@ -52,6 +52,7 @@ PACKAGES=(
   gcc-arm-none-eabi libnewlib-arm-none-eabi
   clang
   zlib1g-dev  # the twin's FST writer (Verilator --trace-fst) links zlib; the package's find_dependency(ZLIB) (issue 35)
+  doxygen  # the API reference of the installed headers: target docs, test api_reference_complete (docs/api/README.md)
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

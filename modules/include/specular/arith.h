@@ -1,8 +1,9 @@
-// The arithmetic of every block of Fig. 1, written once, on integer codes.
-//
-// Each function is what one block does between its input and output pins. The
-// block's SC_MODULE calls it from its process; the kernel-free Core calls the same
-// functions in the same order. Nothing here knows about SystemC.
+/// \file
+/// The arithmetic of every block of Fig. 1, written once, on integer codes.
+///
+/// Each function is what one block does between its input and output pins. The
+/// block's SC_MODULE calls it from its process; the kernel-free Core calls the same
+/// functions in the same order. Nothing here knows about SystemC.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +15,7 @@ namespace specular {
 
 struct Config;  // core.h: ROM 38's contents depend on the whole configuration
 
+/// The per-block arithmetic of Fig. 1 on integer codes (see arith.h).
 namespace arith {
 
 /// The products' width: 64 × 64 bits before rounding. GCC's and Clang's 128-bit integer,
@@ -55,6 +57,7 @@ inline wide_t round_shift(wide_t value, int shift) {
                                                                        code_t a, code_t b, int shift) {
   return saturate(format, round_shift(static_cast<wide_t>(a) * b, shift));
 }
+/// The same, wrapped to `format` instead of saturated (multiplier 6's 128-bit tail).
 [[gnu::cold, gnu::noinline]] inline code_t wide_multiply_round_wrap(const FixedFormat& format,
                                                                    code_t a, code_t b, int shift) {
   return wrap(format, static_cast<code_t>(round_shift(static_cast<wide_t>(a) * b, shift)));
@@ -104,6 +107,7 @@ struct LeadingOne {
   int msb = 0;                  ///< index of the highest one
   std::uint64_t normalised = 0; ///< x << (width − 1 − msb)
 };
+/// The leading one of `x` (> 0) within `width` bits (≤ 64): see LeadingOne.
 inline LeadingOne leading_one(std::uint64_t x, int width) {
   const int msb = 63 - __builtin_clzll(x);
   return LeadingOne{msb, x << (width - 1 - msb)};
@@ -117,6 +121,7 @@ inline LeadingOne leading_one(std::uint64_t x, int width) {
 /// smallest cos code, −F (spec, Decision "log2 0").
 class Rom5Table {
  public:
+  /// Fills the table for `formats` (2^rom5_addr_bits words of rom5_word_bits bits).
   explicit Rom5Table(const Formats& formats);
   /// log2 of a multiplexer-3 code, in ROM 5's output format.
   code_t log2(code_t bus) const {
@@ -216,16 +221,20 @@ double register9_lobe_integral(const Formats& formats, const Rom5Table& rom5, co
                                code_t pin20_a, code_t n);
 
 // ---- ROM 38: normalisation coefficient K(n) ------------------------------------
-/// s·K(n) for every address 0 .. 2^n_bits − 1 (n = 0 and n > 1000 included: the
-/// same formula), rounded to the ROM word (spec §1). Under `device_energy` the word is
+/// ROM 38's table: s·K(n) for every address 0 to 2^n_bits − 1 (n = 0 and n > 1000
+/// included: the same formula), rounded to the ROM word (spec §1). Under `device_energy` the word is
 /// 1/I(n) (s folds into it). Throws std::invalid_argument naming n and the format if a
 /// word does not fit: ROM 38 is widened, never left to saturate.
 class Rom38Table {
  public:
+  /// Fills the table for `config`'s normalisation and constants; throws
+  /// std::invalid_argument naming n and the format if a word does not fit.
   Rom38Table(const Formats& formats, const Config& config);
   /// The patent's constants (kept for callers that name only the normalisation).
   Rom38Table(const Formats& formats, Normalisation policy);
+  /// The word at address `reg2` (register 2, n): s·K(n) in Formats::rom38.
   code_t k(code_t reg2) const { return words_[static_cast<std::size_t>(reg2) & mask_]; }
+  /// The whole table, address 0 to 2^n_bits − 1, for reports and tests.
   const std::vector<code_t>& words() const { return words_; }
 
  private:

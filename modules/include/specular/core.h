@@ -1,8 +1,9 @@
-// The bit-accurate core: the two passes of Fig. 1 without the SystemC kernel.
-//
-// It calls the per-block functions of arith.h in the order the datapath does, so its
-// results are the pin model's to the bit (a test proves it). Use it where cycles do
-// not matter: sweeps, the TLM `lt` model, rendering, studies.
+/// \file
+/// The bit-accurate core: the two passes of Fig. 1 without the SystemC kernel.
+///
+/// It calls the per-block functions of arith.h in the order the datapath does, so its
+/// results are the pin model's to the bit (a test proves it). Use it where cycles do
+/// not matter: sweeps, the TLM `lt` model, rendering, studies.
 #pragma once
 
 #include <array>
@@ -15,10 +16,10 @@ namespace specular {
 
 /// Everything fixed when a device is built: widths and the three policies.
 struct Config {
-  Widths widths{};
-  Normalisation normalisation = Normalisation::patent;
-  Saturation saturation = Saturation::clamp;
-  Constants constants = Constants::patent;
+  Widths widths{};                                      ///< bus widths (docs/design.md)
+  Normalisation normalisation = Normalisation::patent;  ///< what ROM 38 holds
+  Saturation saturation = Saturation::clamp;            ///< adder 8 on a negative sum
+  Constants constants = Constants::patent;              ///< pins 19 (h), 20 (a), ROM 38's scale
 };
 
 /// The codes pins 19 (h) and 20 (a) carry in a device built with `config`: the one
@@ -26,6 +27,7 @@ struct Config {
 inline code_t pin19_code(const Config& config) {
   return pin19_code(Formats(config.widths), config.constants);
 }
+/// Pin 20's code (the constant a) in register 9's format, for a device built with `config`.
 inline code_t pin20_code(const Config& config) {
   return pin20_code(Formats(config.widths), config.constants);
 }
@@ -52,21 +54,36 @@ struct Result {
 /// so shifts, masks and rounding constants are immediates (docs/performance.md: about
 /// 2x on the core); other widths run the same functions on the run-time Formats.
 struct DefaultFormats {
-  static constexpr bool compile_time = true;
-  static constexpr Widths widths{};
-  static constexpr FixedFormat cos{false, 1, 16};
-  static constexpr FixedFormat n{false, 10, 0};
-  static constexpr FixedFormat rgb{false, 8, 0};
-  static constexpr FixedFormat mux4{false, 10, 8};
-  static constexpr FixedFormat log2{true, 5, 22};
-  static constexpr FixedFormat reg9{true, 14, 22};
-  static constexpr FixedFormat rom38{false, 9, 16};
-  static constexpr FixedFormat norm{true, 10, 20};
-  static constexpr FixedFormat out{true, 18, 13};
+  static constexpr bool compile_time = true;         ///< members are constants (arith.h)
+  static constexpr Widths widths{};                  ///< the default widths
+  static constexpr FixedFormat cos{false, 1, 16};    ///< Formats::cos: U1.16
+  static constexpr FixedFormat n{false, 10, 0};      ///< Formats::n: U10.0
+  static constexpr FixedFormat rgb{false, 8, 0};     ///< Formats::rgb: U8.0
+  static constexpr FixedFormat mux4{false, 10, 8};   ///< Formats::mux4: U10.8
+  static constexpr FixedFormat log2{true, 5, 22};    ///< Formats::log2: S5.22
+  static constexpr FixedFormat reg9{true, 14, 22};   ///< Formats::reg9: S14.22
+  static constexpr FixedFormat rom38{false, 9, 16};  ///< Formats::rom38: U9.16
+  static constexpr FixedFormat norm{true, 10, 20};   ///< Formats::norm: S10.20
+  static constexpr FixedFormat out{true, 18, 13};    ///< Formats::out: S18.13
 };
 
+/// The device as a plain C++ object: bit-accurate, no clock, no SystemC.
+///
+/// The datapath of Fig. 1 computed as the netlist computes it, to the bit, without the
+/// clock (no SystemC needed; link SpecularUnit::core).
+///
+/// Build it once per Config (the ROMs are filled in the constructor), then call
+/// operands() to check and quantise user values and run() for each operation:
+/// \code
+/// specular::Core core;                                   // the patent's defaults
+/// specular::Result r = core.run(core.operands(0.9, 20, 255, 128, 0));
+/// double red = core.formats().out.to_real(r.out[0]);     // pin 24, K·A·R
+/// \endcode
 class Core {
  public:
+  /// Builds ROM 5, ROM 38 and the pin 19/20 constants for `config`. Throws
+  /// std::invalid_argument naming the width or constant when `config.widths` is out of
+  /// range (Widths::validate) or a table does not fit its format.
   explicit Core(const Config& config = Config{});
 
   /// One operation: pass 1 (select 36 = 0), pass 2 (select 36 = 1), then the
@@ -92,11 +109,17 @@ class Core {
   /// value and its allowed range) and quantises cos λ to register 1's format.
   Operands operands(double cos_lambda, long long n, long long r, long long g, long long b) const;
 
+  /// The configuration the core was built with.
   const Config& config() const { return config_; }
+  /// The bus formats derived from config().widths.
   const Formats& formats() const { return formats_; }
+  /// ROM 5, the log2 unit's mantissa table.
   const arith::Rom5Table& rom5() const { return rom5_; }
+  /// ROM 38, s·K(n) for every n.
   const arith::Rom38Table& rom38() const { return rom38_; }
+  /// Pin 19's code: the constant h in multiplexer 4's format (½ = 0x80 by default).
   code_t pin19() const { return pin19_; }
+  /// Pin 20's code: the constant a in register 9's format (1.0 = 0x400000 by default).
   code_t pin20() const { return pin20_; }
 
  private:

@@ -1,14 +1,15 @@
-// A harness around a pin-level device: clock, pin signals, wired constants, and a
-// bus-functional driver that runs operations with the spec's protocol.
-//
-// Generic over the device it drives: the SystemC netlist (SpecularDevice, aliased
-// PinHarness in pin_harness.h) or the verilated RTL twin behind its port adapter
-// (twin/: RtlHarness). A Device provides pins 17–35 as bus_in/bus_out/wire_in/wire_out
-// ports, the nets the monitor samples (select36, reg1_q, reg9_q, rom38_k, mul39_norm),
-// formats(), constant_h19(), constant_a20(), trace(file), and a constructor
-// (name, Config, bool real_views). A device that samples its inputs as levels at the
-// rising clock edge (the synchronous variant, twin/: RtlSyncDevice) says so with
-// `static constexpr bool synchronous = true;` and is driven with its own protocol.
+/// \file
+/// A harness around a pin-level device: clock, pin signals, wired constants, and a
+/// bus-functional driver that runs operations with the spec's protocol.
+///
+/// Generic over the device it drives: the SystemC netlist (SpecularDevice, aliased
+/// PinHarness in pin_harness.h) or the verilated RTL twin behind its port adapter
+/// (twin/: RtlHarness). A Device provides pins 17–35 as bus_in/bus_out/wire_in/wire_out
+/// ports, the nets the monitor samples (select36, reg1_q, reg9_q, rom38_k, mul39_norm),
+/// formats(), constant_h19(), constant_a20(), trace(file), and a constructor
+/// (name, Config, bool real_views). A device that samples its inputs as levels at the
+/// rising clock edge (the synchronous variant, twin/: RtlSyncDevice) says so with
+/// `static constexpr bool synchronous = true;` and is driven with its own protocol.
 #pragma once
 
 #include <cmath>
@@ -31,9 +32,20 @@ namespace specular {
 /// clock edge (`Device::synchronous`), instead of taking their edges as Fig. 1–2 do.
 template <class Device, class = void>
 struct is_synchronous_device : std::false_type {};
+/// A device that declares `static constexpr bool synchronous` is what that constant says.
 template <class Device>
 struct is_synchronous_device<Device, std::void_t<decltype(Device::synchronous)>>
     : std::bool_constant<Device::synchronous> {};
+
+/// How a DeviceHarness runs pin 28. Either freely from time 0 (an sc_clock: the
+/// testbench, the benches) or on demand (a TLM transactor, SpecularPinTarget): then it
+/// rises only between clock_on() and a few periods after clock_off(), on the same grid of
+/// rising edges (multiples of the period), so an idle device costs no process
+/// activations and sc_start() without a time end returns when nothing else is pending.
+enum class ClockMode : std::uint8_t {
+  free_running,  ///< an sc_clock from time 0
+  on_demand      ///< only between clock_on() and clock_off() (plus idle_tail_rises)
+};
 
 /// Owns the device, its clock (pin 28) and every pin signal, ties pins 19,
 /// 20, 34 to their constants, and drives operations exactly as spec §3 "protocol" allows:
@@ -43,22 +55,19 @@ struct is_synchronous_device<Device, std::void_t<decltype(Device::synchronous)>>
 ///   - results are read at the rising edge of 35 (start + 2.5 T);
 ///   - starts come every 2 T while n, R, G, B are unchanged (only cos λ streams),
 ///     every 3 T when they change (they may be reloaded only after 35 rises).
+///
 /// A synchronous device (is_synchronous_device) gets its protocol instead
 /// (docs/rtl.md): start, pin 17 and the loads with their data rise a quarter period
 /// before the start edge and start and the loads fall a quarter period after it;
 /// results are read at 35↑ (start + 2 T); the same 2 T and 3 T intervals.
-/// The run functions block: call them from an SC_THREAD.
+/// The run functions block: call them from an SC_THREAD. Pin 28 runs as ClockMode says.
 ///
-/// Pin 28 either runs freely from time 0 (an sc_clock: the testbench, the benches) or
-/// on demand (a TLM transactor, SpecularPinTarget): then it rises only between
-/// clock_on() and a few periods after clock_off(), on the same grid of rising edges
-/// (multiples of the period), so an idle device costs no process activations and
-/// sc_start() without a time end returns when nothing else is pending.
-enum class ClockMode : std::uint8_t { free_running, on_demand };
-
+/// \tparam Device the device driven (see this file's description for what it provides)
 template <class Device>
 class DeviceHarness : public sc_core::sc_module {
  public:
+  /// Builds the device as `dut` with `config` (and `real_views`, see SpecularDevice),
+  /// its clock of period `clock_period` in `clock_mode`, and binds every pin.
   DeviceHarness(sc_core::sc_module_name name, const Config& config,
                 const sc_core::sc_time& clock_period, bool real_views = false,
                 ClockMode clock_mode = ClockMode::free_running);
@@ -71,6 +80,7 @@ class DeviceHarness : public sc_core::sc_module {
   void clock_off();
   /// Rising edges of an on-demand pin 28 so far (0 when free-running).
   std::uint64_t clock_rises() const { return clock_rises_; }
+  /// Rising edges an on-demand pin 28 still makes after clock_off().
   static constexpr int idle_tail_rises = 3;
   /// Pin 28, whichever the mode.
   const sc_core::sc_signal_in_if<bool>& pin28() const { return *pin28_; }
@@ -89,12 +99,16 @@ class DeviceHarness : public sc_core::sc_module {
   /// Trace pins (under this harness's name) and the device's internals.
   void trace(sc_core::sc_trace_file* file) const;
 
+  /// The period of pin 28, T.
   const sc_core::sc_time& clock_period() const { return period_; }
 
   /// Called (if set) with an operation's index in its batch just before its pins are
-  /// driven, and just after its results were taken at 35↑: where a trace window opens
-  /// and closes (specular_tb --trace-ops). Empty: nothing is called.
+  /// driven: where a trace window opens (`specular_tb --trace-ops`). Empty: nothing is
+  /// called.
   std::function<void(std::size_t)> before_drive, after_done;
+  /// \var after_done
+  /// Called (if set) with an operation's index in its batch just after its results were
+  /// taken at 35↑: where a trace window closes. Empty: nothing is called.
 
  private:
   void on_select36();  // pass 1 is in register 9 while select 36 rises
@@ -114,25 +128,25 @@ class DeviceHarness : public sc_core::sc_module {
   std::uint64_t clock_rises_ = 0;
 
  public:
-  bus_signal pin17_cos{"pin17_cos"};
-  bus_signal pin18_n{"pin18_n"};
-  bus_signal pin19_h{"pin19_h"};
-  bus_signal pin20_a{"pin20_a"};
-  bus_signal pin21_r{"pin21_r"};
-  bus_signal pin22_g{"pin22_g"};
-  bus_signal pin23_b{"pin23_b"};
-  bus_signal pin24_r{"pin24_r"};
-  bus_signal pin25_g{"pin25_g"};
-  bus_signal pin26_b{"pin26_b"};
-  wire pin27_start{"pin27_start"};
-  wire pin29_reset_n{"pin29_reset_n", true};
-  wire pin30_load_n{"pin30_load_n"};
-  wire pin31_load_r{"pin31_load_r"};
-  wire pin32_load_g{"pin32_load_g"};
-  wire pin33_load_b{"pin33_load_b"};
-  wire pin34_carry{"pin34_carry", true};
-  wire pin35_done{"pin35_done", true};
-  Device dut;
+  bus_signal pin17_cos{"pin17_cos"};          ///< pin 17: cos λ code
+  bus_signal pin18_n{"pin18_n"};              ///< pin 18: n code
+  bus_signal pin19_h{"pin19_h"};              ///< pin 19: tied to the constant h
+  bus_signal pin20_a{"pin20_a"};              ///< pin 20: tied to the constant a
+  bus_signal pin21_r{"pin21_r"};              ///< pin 21: R intensity
+  bus_signal pin22_g{"pin22_g"};              ///< pin 22: G intensity
+  bus_signal pin23_b{"pin23_b"};              ///< pin 23: B intensity
+  bus_signal pin24_r{"pin24_r"};              ///< pin 24: specular R (output)
+  bus_signal pin25_g{"pin25_g"};              ///< pin 25: specular G (output)
+  bus_signal pin26_b{"pin26_b"};              ///< pin 26: specular B (output)
+  wire pin27_start{"pin27_start"};            ///< pin 27: write register 1 and start
+  wire pin29_reset_n{"pin29_reset_n", true};  ///< pin 29: reset, active low (high: running)
+  wire pin30_load_n{"pin30_load_n"};          ///< pin 30: write register 2
+  wire pin31_load_r{"pin31_load_r"};          ///< pin 31: write register 10
+  wire pin32_load_g{"pin32_load_g"};          ///< pin 32: write register 11
+  wire pin33_load_b{"pin33_load_b"};          ///< pin 33: write register 12
+  wire pin34_carry{"pin34_carry", true};      ///< pin 34: adder 8's carry-in, tied to 1
+  wire pin35_done{"pin35_done", true};        ///< pin 35: done (active-low pulse; idle high)
+  Device dut;                                 ///< the device driven
 
  private:
   // Monitor state for the batch in flight.

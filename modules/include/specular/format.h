@@ -1,8 +1,9 @@
-// Every bus's fixed-point format and every ROM's organisation, in one place.
-//
-// Values travel through the model as integer codes (`code_t`); a FixedFormat says
-// how a code maps to a real number. Real numbers appear only at the edges (reports,
-// traces, the reference). See docs/design.md for the table of formats and why.
+/// \file
+/// Every bus's fixed-point format and every ROM's organisation, in one place.
+///
+/// Values travel through the model as integer codes (`code_t`); a FixedFormat says
+/// how a code maps to a real number. Real numbers appear only at the edges (reports,
+/// traces, the reference). See docs/design.md for the table of formats and why.
 #pragma once
 
 #include <cmath>
@@ -17,16 +18,21 @@ using code_t = std::int64_t;
 
 /// Two's-complement (or unsigned) fixed-point format: [sign] int_bits . frac_bits.
 struct FixedFormat {
-  bool is_signed = false;
+  bool is_signed = false;  ///< two's complement (S) or unsigned (U)
   int int_bits = 0;   ///< integer bits, not counting the sign bit
   int frac_bits = 0;  ///< fraction bits
 
+  /// Bits on the bus: sign + int_bits + frac_bits.
   constexpr int width() const { return (is_signed ? 1 : 0) + int_bits + frac_bits; }
+  /// Largest code: 2^(int_bits + frac_bits) − 1.
   constexpr code_t max_code() const { return (code_t{1} << (int_bits + frac_bits)) - 1; }
+  /// Smallest code: −2^(int_bits + frac_bits) if signed, else 0.
   constexpr code_t min_code() const {
     return is_signed ? -(code_t{1} << (int_bits + frac_bits)) : 0;
   }
+  /// The code of 1.0: 2^frac_bits.
   constexpr code_t one() const { return code_t{1} << frac_bits; }
+  /// The real number a code stands for: code · 2^−frac_bits.
   double to_real(code_t code) const { return std::ldexp(static_cast<double>(code), -frac_bits); }
   /// Resolution: the value of one least significant bit.
   double lsb() const { return std::ldexp(1.0, -frac_bits); }
@@ -58,12 +64,18 @@ enum class Saturation {
   literal,  ///< keep the signed value, for study
 };
 
+/// The policy's name as the tools' options take it: "patent", "energy", "none", "device-energy".
 const char* to_string(Normalisation policy);
+/// The policy's name: "clamp" or "literal".
 const char* to_string(Saturation policy);
+/// The policy's name: "patent", "minimax-half" or "minimax".
 const char* to_string(Constants policy);
 /// Parse a policy name; throws std::invalid_argument naming the value and the choices.
 Normalisation parse_normalisation(const std::string& text);
+/// Parse "clamp" or "literal"; throws std::invalid_argument naming the value and the choices.
 Saturation parse_saturation(const std::string& text);
+/// Parse "patent", "minimax-half" or "minimax"; throws std::invalid_argument naming the
+/// value and the choices.
 Constants parse_constants(const std::string& text);
 
 /// The widths the designer chooses. Every bus format below is derived from these,
@@ -78,11 +90,11 @@ struct Widths {
   int reg9_int_bits = 14;   ///< adder 8 / register 9 / multiplexer 3 bus: integer bits
   int reg9_frac_bits = 22;  ///< ... and fraction bits (signed format)
   int rom38_int_bits = 9;   ///< ROM 38 word: s·K(n) as U9.F (energy × minimax reaches 272)
-  int rom38_frac_bits = 16;
+  int rom38_frac_bits = 16; ///< ... and its fraction bits
   int norm_int_bits = 10;   ///< multiplier 39 output: K·A as a signed format
-  int norm_frac_bits = 20;
+  int norm_frac_bits = 20;  ///< ... and its fraction bits
   int out_int_bits = 18;    ///< pins 24–26: K·A·I as a signed format (32 bits in all)
-  int out_frac_bits = 13;
+  int out_frac_bits = 13;   ///< ... and its fraction bits
 
   /// Throws std::invalid_argument naming the offending width and its allowed range.
   void validate() const;
@@ -97,18 +109,21 @@ void set_width(Widths& widths, const std::string& name, int value);
 std::string width_names();
 /// Every width of Widths with the name set_width() takes, in the order of Widths.
 struct WidthField {
-  const char* name;
-  int Widths::*member;
+  const char* name;     ///< the member's name, e.g. "cos_frac_bits"
+  int Widths::*member;  ///< the member itself
 };
+/// Every member of Widths, with its name, in declaration order.
 const std::vector<WidthField>& width_fields();
 
 /// Bus formats derived from Widths; computed once, read everywhere.
 struct Formats {
+  /// Derives every format from `widths`; throws std::invalid_argument as
+  /// Widths::validate() does.
   explicit Formats(const Widths& widths = Widths{});
   /// Run-time values (Core's DefaultFormats are the compile-time set: arith.h).
   static constexpr bool compile_time = false;
 
-  Widths widths;
+  Widths widths;       ///< the widths the formats come from
   FixedFormat cos;     ///< pin 17, register 1 (U1.16)
   FixedFormat n;       ///< pin 18, register 2, ROM 38 address (U10.0)
   FixedFormat rgb;     ///< pins 21–23, registers 10–12 (U8.0)
@@ -119,15 +134,19 @@ struct Formats {
   FixedFormat norm;    ///< multiplier 39 output K·A (S10.20)
   FixedFormat out;     ///< pins 24–26, multipliers 13–15 (S18.13)
 
+  /// ROM 5's words: 2^rom5_addr_bits (32 768 by default).
   int rom5_words() const { return 1 << widths.rom5_addr_bits; }
+  /// ROM 38's words: one per n code, 2^n_bits (1 024 by default).
   int rom38_words() const { return 1 << widths.n_bits; }
+  /// ROM 5's size in bits.
   long rom5_bits() const { return static_cast<long>(rom5_words()) * widths.rom5_word_bits; }
+  /// ROM 38's size in bits.
   long rom38_bits() const { return static_cast<long>(rom38_words()) * rom38.width(); }
 };
 
 /// Smallest and largest n the device accepts (spec §1).
 constexpr unsigned n_min = 1;
-constexpr unsigned n_max = 1000;
+constexpr unsigned n_max = 1000;  ///< largest n the device accepts
 
 /// cos λ (a real in [0, 1]) to the code held in register 1, rounded to nearest.
 /// Throws std::out_of_range naming the value and the range (NaN included).

@@ -1,5 +1,6 @@
-// The harness around the pin-level SystemC device: DeviceHarness (device_harness.h)
-// driving SpecularDevice, the netlist of Fig. 1 and Fig. 2.
+/// \file
+/// The harness around the pin-level SystemC device: DeviceHarness (device_harness.h)
+/// driving SpecularDevice, the netlist of Fig. 1 and Fig. 2.
 #pragma once
 
 #include "specular/device.h"
@@ -7,6 +8,7 @@
 
 namespace specular {
 
+/// The harness of the pin-level SystemC device: the `pin` model of specular_tb.
 using PinHarness = DeviceHarness<SpecularDevice>;
 extern template class DeviceHarness<SpecularDevice>;  // instantiated in pin_harness.cpp
 

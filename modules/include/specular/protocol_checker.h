@@ -1,4 +1,5 @@
-// Protocol checker: watches the device's pins and control unit 16, reports misuse.
+/// \file
+/// Protocol checker: watches the device's pins and control unit 16, reports misuse.
 #pragma once
 
 #include <array>
@@ -19,6 +20,7 @@ namespace specular {
 /// The rules, with a start edge at t0 on a rising clock edge and period T (spec timing
 /// table: Q41 at t0, Q42 at t0+T/2, pass 1 at t0+T, Q43 at t0+3T/2, pass 2 at t0+2T,
 /// 35↑ at t0+5T/2):
+/// \code{.unparsed}
 ///   start-while-busy   start while Q41 or Q42 is set or AND 40 holds 41 in reset
 ///                      (t0 < t < t0+3T/2): the edge is lost or merged.
 ///   start-too-soon     start accepted but less than 2 T after the previous start
@@ -38,6 +40,7 @@ namespace specular {
 ///   no-done            pin 28 had edges after a start, but 35 did not rise within
 ///                      4 T: the clock stopped or slowed mid-operation, or the
 ///                      control unit is locked, until the next reset.
+/// \endcode
 ///
 /// Cost: a handful of process activations per operation (start, done, strobes, one
 /// timed watchdog). When pin 28 is bound to an sc_clock, its edges are computed from
@@ -57,6 +60,7 @@ class ProtocolChecker : public sc_core::sc_module {
   wire_in q42{"q42"};            ///< control unit 16: flip-flop 42 (pass 1 pending)
   wire_in nand45{"nand45"};      ///< control unit 16: NAND 45 (low: pass 1 write, 41 held reset)
 
+  /// Registers the checker's processes; bind every port above (DevicePins::bind does).
   explicit ProtocolChecker(sc_core::sc_module_name name);
 
   /// How long a start may wait for a clock edge before `no-clock` is reported, while

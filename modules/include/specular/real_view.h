@@ -1,4 +1,5 @@
-// A real-valued mirror of a code bus, for waveforms only.
+/// \file
+/// A real-valued mirror of a code bus, for waveforms only.
 #pragma once
 
 #include <string>
@@ -13,8 +14,10 @@ namespace specular {
 /// `%.16g` per value written, and GTKWave shows the codes as fixed point without it.
 class RealView : public sc_core::sc_module {
  public:
-  bus_in code{"code"};
+  bus_in code{"code"};  ///< the code bus followed
+  /// A view of codes in `format`; bind `code` to the bus.
   RealView(sc_core::sc_module_name name, const FixedFormat& format);
+  /// The current value, format.to_real(code), traced as a double.
   const double& value() const { return value_; }
 
  private:

@@ -1,6 +1,7 @@
-// Double-precision references: the patent's formula on the quantised inputs, and
-// the exact Blinn–Phong lobe. Independent of the fixed-point arithmetic: nothing
-// here reads a format other than the resolution of the cos λ input.
+/// \file
+/// Double-precision references: the patent's formula on the quantised inputs, and
+/// the exact Blinn–Phong lobe. Independent of the fixed-point arithmetic: nothing
+/// here reads a format other than the resolution of the cos λ input.
 #pragma once
 
 #include <array>
@@ -8,6 +9,7 @@
 #include "specular/format.h"
 
 namespace specular {
+/// Double-precision references of the patent's formula and the exact lobe (see reference.h).
 namespace reference {
 
 /// log2 cos λ, with log2 0 defined as log2 of the smallest non-zero code, −F
@@ -41,6 +43,8 @@ struct Figures {
   std::array<double, 3> out_ref{};  ///< norm_ref·R, ·G, ·B
 };
 
+/// Every Figures value for one computation: cos_q the cos λ register 1 holds (already
+/// quantised), rgb the intensities (0..255), the policies and constants as the device's.
 Figures evaluate(double cos_q, unsigned n, const std::array<double, 3>& rgb,
                  Normalisation normalisation, Saturation saturation, int cos_frac_bits,
                  Constants constants = Constants::patent);

@@ -1,24 +1,26 @@
-// The sc_report message types the model issues, in one place.
-//
-// Every misuse the model notices is reported through SystemC's report handler with
-// one of these message types, so a user can filter it or make it fatal:
-//
-//   // stop the simulation (throw sc_report) on any protocol misuse:
-//   sc_core::sc_report_handler::set_actions(specular::report::start_while_busy,
-//                                           sc_core::SC_THROW);
-//   // or on all of them at once (the types share the prefix):
-//   for (const char* type : specular::report::protocol_types)
-//     sc_core::sc_report_handler::set_actions(type, sc_core::SC_DISPLAY | sc_core::SC_THROW);
-//   // silence one:
-//   sc_core::sc_report_handler::set_actions(specular::report::reset_mid_operation,
-//                                           sc_core::SC_DO_NOTHING);
-//
-// SpecularTarget reports its first refusal of each kind as tlm_access_refused.
-// docs/misuse.md lists, for each type, the misuse, the spec rule it breaks and what
-// the device does with it.
+/// \file
+/// The sc_report message types the model issues, in one place.
+///
+/// Every misuse the model notices is reported through SystemC's report handler with
+/// one of these message types, so a user can filter it or make it fatal:
+/// \code
+///   // stop the simulation (throw sc_report) on any protocol misuse:
+///   sc_core::sc_report_handler::set_actions(specular::report::start_while_busy,
+///                                           sc_core::SC_THROW);
+///   // or on all of them at once (the types share the prefix):
+///   for (const char* type : specular::report::protocol_types)
+///     sc_core::sc_report_handler::set_actions(type, sc_core::SC_DISPLAY | sc_core::SC_THROW);
+///   // silence one:
+///   sc_core::sc_report_handler::set_actions(specular::report::reset_mid_operation,
+///                                           sc_core::SC_DO_NOTHING);
+/// \endcode
+/// SpecularTarget reports its first refusal of each kind as tlm_access_refused.
+/// docs/misuse.md lists, for each type, the misuse, the spec rule it breaks and what
+/// the device does with it.
 #pragma once
 
 namespace specular {
+/// The sc_report message types the model issues (see report_ids.h, docs/misuse.md).
 namespace report {
 
 // ---- pin protocol (ProtocolChecker, inside SpecularDevice; spec §3 "protocol") ----

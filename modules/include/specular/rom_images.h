@@ -1,7 +1,8 @@
-// The words of ROM 5 and ROM 38 as the RTL holds them, built once from the library's
-// tables for both of their users: specular_romgen writes them as $readmemh images (for
-// Icarus, Yosys and the silicon flow), and the twin (twin/) writes them straight into its
-// verilated ROMs, so the installed twin reads no file (docs/integration.md §9).
+/// \file
+/// The words of ROM 5 and ROM 38 as the RTL holds them, built once from the library's
+/// tables for both of their users: specular_romgen writes them as $readmemh images (for
+/// Icarus, Yosys and the silicon flow), and the twin (twin/) writes them straight into its
+/// verilated ROMs, so the installed twin reads no file (docs/integration.md §9).
 #pragma once
 
 #include <cstdint>
@@ -25,6 +26,7 @@ struct RomImages {
   std::vector<std::uint64_t> rom38;  ///< bank-major: word b · rom38_words() + n
   int rom38_banks_filled = 0;        ///< banks that hold a table
 };
+/// ROM 5's table and every bank of ROM 38 for `formats`, as RomImages.
 RomImages rom_images(const Formats& formats, int bank_bits = rom38_bank_bits);
 
 }  // namespace specular

@@ -1,4 +1,5 @@
-// The one public header: everything a user of the IP needs.
+/// \file
+/// The one public header: everything a user of the IP needs.
 #pragma once
 
 #include "specular/arith.h"
@@ -12,3 +13,8 @@
 #include "specular/tlm/pin_target.h"
 #include "specular/tlm/register_map.h"
 #include "specular/tlm/target.h"
+
+/// \namespace specular
+/// The specular colour intensity IP of UA 59965 U: the bit-accurate Core, the pin-level
+/// SystemC device and its harness, the TLM-2.0 targets, register map and driver, and
+/// (SpecularUnit::twin) the RTL twin. See the reference's front page for where to start.

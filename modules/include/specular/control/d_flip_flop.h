@@ -1,4 +1,5 @@
-// D flip-flops 41, 42, 43 of Fig. 2.
+/// \file
+/// D flip-flops 41, 42, 43 of Fig. 2.
 #pragma once
 
 #include "specular/systemc.h"
@@ -9,13 +10,14 @@ namespace specular {
 /// (R wins when both are low). Power-on state: Q = 0.
 class DFlipFlop : public sc_core::sc_module {
  public:
-  wire_in d{"d"};
+  wire_in d{"d"};  ///< data input D
   wire_in c{"c"};        ///< clock input C
   wire_in s_n{"s_n"};    ///< asynchronous set, active low
   wire_in r_n{"r_n"};    ///< asynchronous reset, active low
-  wire_out q{"q"};
-  wire_out q_n{"q_n"};
+  wire_out q{"q"};  ///< output Q
+  wire_out q_n{"q_n"};  ///< output /Q
 
+  /// A flip-flop at Q = 0.
   explicit DFlipFlop(sc_core::sc_module_name name);
 
  private:

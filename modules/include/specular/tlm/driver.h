@@ -1,5 +1,6 @@
-// Software's view of the IP: what a CPU's driver does over the bus, for initiators
-// (the testbench, the example virtual platform, users' platforms).
+/// \file
+/// Software's view of the IP: what a CPU's driver does over the bus, for initiators
+/// (the testbench, the example virtual platform, users' platforms).
 #pragma once
 
 #include <array>
@@ -19,9 +20,12 @@ namespace specular {
 /// A refused transaction: names the access, the TLM response and STATUS's cause.
 class TransportError : public std::runtime_error {
  public:
+  /// `what`: the message (names the access); `status`: the TLM response; `cause`: STATUS.CAUSE.
   TransportError(const std::string& what, tlm::tlm_response_status status, ErrorCause cause)
       : std::runtime_error(what), status_(status), cause_(cause) {}
+  /// The TLM response status the target returned.
   tlm::tlm_response_status status() const { return status_; }
+  /// The cause STATUS[15:8] gave for the refusal.
   ErrorCause cause() const { return cause_; }
 
  private:
@@ -29,21 +33,30 @@ class TransportError : public std::runtime_error {
   ErrorCause cause_;
 };
 
+/// Software's view of a target from a SystemC initiator: registers, bursts and whole
+/// operations, each access checked (TransportError on a refusal).
+///
 /// Register accesses through an initiator port (e.g. a tlm_utils::simple_initiator_socket)
 /// with loosely-timed temporal decoupling: every transaction runs at the quantum
 /// keeper's local time, and the keeper synchronises when its quantum is used up.
 /// Call from an SC_THREAD. One generic payload is reused: no allocation per access.
 class SpecularDriver {
  public:
+  /// Any port or initiator socket with the TLM-2.0 forward interface.
   using port_type = sc_core::sc_port_b<tlm::tlm_fw_transport_if<>>;
 
   /// `base`: the IP's address on the bus behind `port`.
   SpecularDriver(port_type& port, std::uint64_t base, tlm_utils::tlm_quantumkeeper& keeper);
 
+  /// Reads one register. Throws TransportError if the target refuses the access.
   std::uint32_t read(Reg reg);
+  /// Writes one register. Throws TransportError if the target refuses the access
+  /// (e.g. a value out of range: ErrorCause::n_out_of_range).
   void write(Reg reg, std::uint32_t value);
   /// Bursts of whole words at a byte offset from the base (e.g. the batch windows).
+  /// Throws TransportError if the target refuses the access.
   void read_words(std::uint32_t offset, std::uint32_t* words, std::size_t count);
+  /// A burst write of `count` words at `offset`; throws TransportError if refused.
   void write_words(std::uint32_t offset, const std::uint32_t* words, std::size_t count);
 
   /// One operation through the registers: N, R, G, B (those that changed since the
@@ -63,6 +76,7 @@ class SpecularDriver {
   /// Start → results of the last compute*() call as the initiator saw it: the
   /// START (or BATCH_COS) writes' annotated delay plus any time the target waited.
   const sc_core::sc_time& operation_duration() const { return operation_duration_; }
+  /// The quantum keeper whose local time the accesses use.
   tlm_utils::tlm_quantumkeeper& keeper() { return keeper_; }
 
  private:

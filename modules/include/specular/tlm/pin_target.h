@@ -1,4 +1,5 @@
-// `pin`: the TLM target as a transactor in front of the pin-level netlist.
+/// \file
+/// `pin`: the TLM target as a transactor in front of the pin-level netlist.
 #pragma once
 
 #include <cstdint>
@@ -29,7 +30,7 @@ enum class PinDelay : std::uint8_t {
 /// "keep" or "consume".
 const char* to_string(PinDelay delay);
 /// PinDelay from "keep" or "consume"; throws std::invalid_argument naming the value and
-/// the allowed ones (for options such as specular_tb's and soc_platform's --pin-delay).
+/// the allowed ones (for options such as specular_tb's and soc_platform's `--pin-delay`).
 PinDelay pin_delay_from_string(const std::string& text);
 
 /// SpecularPinTarget's configuration beyond the device's Config (issue 35): set its
@@ -43,6 +44,9 @@ struct PinTargetSettings {
   PinDelay delay = PinDelay::keep;
 };
 
+/// The `pin` target: SpecularTarget's register file computed by the pin-level device,
+/// cycle-accurate. See SpecularTarget for the registers, the bus checks and done_irq.
+///
 /// Drives the device of Fig. 1 through PinHarness, as a TLM-to-pin bridge does
 /// (compare Xilinx libsystemctlm-soc's tlm2apb-bridge). Cycle-accurate: an operation
 /// first waits out the initiator's annotated delay (PinDelay::consume; with
@@ -69,6 +73,9 @@ struct PinTargetSettings {
 /// with the annotated delay (PinDelay: keep, the default, or consume).
 class SpecularPinTarget : public SpecularTarget {
  public:
+  /// A transactor over a SpecularDevice built from `config`, with `settings` (clock
+  /// period, real views, delay policy). Throws std::invalid_argument as
+  /// SpecularTarget's constructor does.
   SpecularPinTarget(sc_core::sc_module_name name, const Config& config,
                     const PinTargetSettings& settings);
   /// The positional form, as before; `delay` now defaults to keep, as the settings do.
@@ -76,7 +83,8 @@ class SpecularPinTarget : public SpecularTarget {
                              const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS),
                              bool real_views = false, PinDelay delay = PinDelay::keep);
 
-  PinHarness harness;
+  PinHarness harness;  ///< the pin-level device and its driver (on-demand clock)
+  /// What b_transport does with the annotated delay (PinTargetSettings::delay).
   PinDelay delay_policy() const { return delay_policy_; }
 
  protected:

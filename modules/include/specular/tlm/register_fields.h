@@ -1,20 +1,21 @@
-// The bit fields of the register map (register_map.h), written once as a table: each
-// field's position, width, access, description and, for an enumerated field, which
-// enumeration its values come from.
-//
-// register_map.h gives each row's offset, access and reset as one 32-bit word and the
-// bits of STATUS, CONTROL and CONFIG as constants (status_bits, control_bits,
-// config_bits); this table names every field of every row, and the static_asserts below
-// tie it to those constants and to config_word(), so it cannot drift from them. Every
-// description of the map for other tools comes from here: the firmware C header
-// (firmware/include/specular/specular_regs.h, specular_firmware_header, docs/firmware.md)
-// and the IP-XACT component and SystemRDL addrmap (ip/, specular_ip_export,
-// docs/ipxact.md). Kernel-free: no SystemC.
-//
-// Names: upper case C identifiers, the names firmware uses (SPECULAR_<REG>_<FIELD>_*):
-// CONFIG's fraction widths are COS_FRAC_BITS and OUT_FRAC_BITS, like RGB_BITS beside
-// them, since they hold a number of bits, not a fraction. Enumerated values are named
-// the same way, after the C++ enumerator's to_string ("device-energy" → DEVICE_ENERGY).
+/// \file
+/// The bit fields of the register map (register_map.h), written once as a table: each
+/// field's position, width, access, description and, for an enumerated field, which
+/// enumeration its values come from.
+///
+/// register_map.h gives each row's offset, access and reset as one 32-bit word and the
+/// bits of STATUS, CONTROL and CONFIG as constants (status_bits, control_bits,
+/// config_bits); this table names every field of every row, and the static_asserts below
+/// tie it to those constants and to config_word(), so it cannot drift from them. Every
+/// description of the map for other tools comes from here: the firmware C header
+/// (firmware/include/specular/specular_regs.h, specular_firmware_header, docs/firmware.md)
+/// and the IP-XACT component and SystemRDL addrmap (ip/, specular_ip_export,
+/// docs/ipxact.md). Kernel-free: no SystemC.
+///
+/// Names: upper case C identifiers, the names firmware uses (SPECULAR_<REG>_<FIELD>_*):
+/// CONFIG's fraction widths are COS_FRAC_BITS and OUT_FRAC_BITS, like RGB_BITS beside
+/// them, since they hold a number of bits, not a fraction. Enumerated values are named
+/// the same way, after the C++ enumerator's to_string ("device-energy" → DEVICE_ENERGY).
 #pragma once
 
 #include <cstddef>
@@ -28,7 +29,7 @@ namespace specular {
 
 /// Which enumeration a field's values come from (none: a plain number).
 enum class FieldValues : std::uint8_t {
-  none,
+  none,           ///< a plain number
   error_cause,    ///< ErrorCause: STATUS[15:8]
   normalisation,  ///< Normalisation: CONFIG[1:0]
   saturation,     ///< Saturation: CONFIG[4]
@@ -37,16 +38,17 @@ enum class FieldValues : std::uint8_t {
 
 /// One bit field of a register.
 struct FieldInfo {
-  Reg reg;
+  Reg reg;           ///< the register holding the field
   const char* name;  ///< upper case, a C identifier
   unsigned shift;    ///< lowest bit
   unsigned width;    ///< bits
   /// read_only, read_write; write_1_to_clear: writing 1 clears it; self_clearing: a
   /// write of 1 acts, the field reads 0.
   Access access;
-  FieldValues values;
-  const char* description;
+  FieldValues values;       ///< the enumeration of its values, or none
+  const char* description;  ///< one line for the docs and the firmware header
 
+  /// The field's bits in place: ((1 << width) − 1) << shift.
   constexpr std::uint32_t mask() const {
     return (width >= 32 ? 0xFFFFFFFFu : ((1u << width) - 1u)) << shift;
   }
@@ -72,13 +74,14 @@ inline constexpr FieldInfo register_fields[] = {
     {Reg::control, "START",         0,                                1,  Access::self_clearing,    FieldValues::none,          "Write 1: run one operation on COS, N, R, G, B; reads 0; any other bit is refused"},
     // clang-format on
 };
+/// Rows of register_fields.
 constexpr std::size_t field_count = sizeof register_fields / sizeof register_fields[0];
 
 /// The fields of `reg`, lowest bit first: its rows of register_fields, or one 32-bit
 /// field VALUE with the row's access and description.
 std::vector<FieldInfo> fields_of(Reg reg);
 
-/// How many values an enumeration has (codes 0 .. count-1; 0 for none).
+/// How many values an enumeration has (codes 0 to count-1; 0 for none).
 constexpr std::uint32_t value_count(FieldValues values) {
   switch (values) {
     case FieldValues::none: return 0;
@@ -93,11 +96,11 @@ constexpr std::uint32_t value_count(FieldValues values) {
 /// One value of an enumerated field.
 struct FieldValue {
   std::string name;  ///< upper case, a C identifier (e.g. "DEVICE_ENERGY")
-  std::uint32_t value;
+  std::uint32_t value;      ///< the field's code for it
   std::string description;  ///< error causes say why; a policy's is empty (its name says it)
 };
 
-/// The values of an enumerated field, codes 0 .. value_count(values) - 1 in order;
+/// The values of an enumerated field, codes 0 to value_count(values) - 1 in order;
 /// empty for FieldValues::none.
 std::vector<FieldValue> field_values(FieldValues values);
 

@@ -1,10 +1,11 @@
-// The register map of the TLM-2.0 target, written once as a table (VCML style:
-// name, offset, access, reset value, description on one line).
-//
-// Everything else reads this table: the target decodes addresses with it, the
-// driver takes offsets from it, docs/tlm.md prints it (a test keeps them equal).
-// Registers are 32 bits wide; data travels in the host's byte order, as the TLM-2.0
-// generic payload's data array does.
+/// \file
+/// The register map of the TLM-2.0 target, written once as a table (VCML style:
+/// name, offset, access, reset value, description on one line).
+///
+/// Everything else reads this table: the target decodes addresses with it, the
+/// driver takes offsets from it, docs/tlm.md prints it (a test keeps them equal).
+/// Registers are 32 bits wide; data travels in the host's byte order, as the TLM-2.0
+/// generic payload's data array does.
 #pragma once
 
 #include <array>
@@ -24,47 +25,50 @@ enum class Access : std::uint8_t {
   self_clearing,     ///< a write acts (START); reads return 0
 };
 
+/// "RO", "RW", "R/W1C" or "W (reads 0)": the access as the docs' tables write it.
 const char* to_string(Access access);
 
 /// Index of every row of the table; the row's position equals its index.
 enum class Reg : std::uint8_t {
-  id,
-  version,
-  config,
-  status,
-  control,
-  batch_capacity,
-  error_address,
-  cos,
-  n,
-  r,
-  g,
-  b,
-  out_r,
-  out_g,
-  out_b,
-  reg1,
-  reg9_pass1_lo,
-  reg9_pass1_hi,
-  reg9_pass2_lo,
-  reg9_pass2_hi,
-  rom38_k,
-  norm39,
-  pin19_h,
-  pin20_a,
+  id,  ///< ID: identification, 0x00059965
+  version,  ///< VERSION: register map version
+  config,  ///< CONFIG: the configuration, fixed at construction
+  status,  ///< STATUS: busy, done, error, cause (W1C)
+  control,  ///< CONTROL: START
+  batch_capacity,  ///< BATCH_CAPACITY: operations per batch
+  error_address,  ///< ERROR_ADDRESS: offset of the last refused access
+  cos,  ///< COS: cos λ code → register 1 (pin 17)
+  n,  ///< N: exponent n → register 2 (pin 18)
+  r,  ///< R: intensity → register 10 (pin 21)
+  g,  ///< G: intensity → register 11 (pin 22)
+  b,  ///< B: intensity → register 12 (pin 23)
+  out_r,  ///< OUT_R: pin 24
+  out_g,  ///< OUT_G: pin 25
+  out_b,  ///< OUT_B: pin 26
+  reg1,  ///< REG1: register 1 of the last operation
+  reg9_pass1_lo,  ///< REG9_PASS1_LO: register 9 after pass 1, bits 31:0
+  reg9_pass1_hi,  ///< REG9_PASS1_HI: ... bits 63:32
+  reg9_pass2_lo,  ///< REG9_PASS2_LO: register 9 after pass 2, bits 31:0
+  reg9_pass2_hi,  ///< REG9_PASS2_HI: ... bits 63:32
+  rom38_k,  ///< ROM38_K: ROM 38 word of the last operation
+  norm39,  ///< NORM39: multiplier 39 output of the last operation
+  pin19_h,  ///< PIN19_H: the constant h on pin 19
+  pin20_a,  ///< PIN20_A: the constant a on pin 20
   operands,   ///< window: COS, N, R, G, B, CONTROL as one burst (aliases)
   results,    ///< window: OUT_R, OUT_G, OUT_B as one burst (aliases)
   batch_cos,  ///< window: one cos code per operation
   batch_out,  ///< window: three output codes (R, G, B) per operation
-  count
+  count  ///< the number of rows (not a row)
 };
 
+/// Rows of register_map (registers and windows): 28.
 constexpr std::size_t register_count = static_cast<std::size_t>(Reg::count);
+/// The row index of `reg` in register_map.
 constexpr std::size_t index_of(Reg reg) { return static_cast<std::size_t>(reg); }
 
 /// Why the last access was refused (STATUS bits 15:8).
 enum class ErrorCause : std::uint8_t {
-  none = 0,
+  none = 0,              ///< no error since the last clear
   cos_out_of_range = 1,  ///< COS / BATCH_COS word above 1.0 (65536 for U1.16)
   n_out_of_range = 2,    ///< N outside 1..1000
   rgb_out_of_range = 3,  ///< R, G or B above 255 (the RGB format's maximum)
@@ -77,24 +81,27 @@ enum class ErrorCause : std::uint8_t {
   command = 10,          ///< a command other than read, write, ignore
 };
 
+/// The cause's name as the enumerator spells it ("cos_out_of_range").
 const char* to_string(ErrorCause cause);
 /// What the cause means, for docs and error messages.
 const char* describe(ErrorCause cause);
+/// ErrorCause's values: codes 0 to 10.
 constexpr std::uint8_t error_cause_count = 11;
 
 /// One row of the register map.
 struct RegisterInfo {
-  Reg reg;
-  const char* name;
+  Reg reg;               ///< the row's index
+  const char* name;      ///< upper case, as the docs and the firmware header spell it
   std::uint32_t offset;  ///< byte offset from the target's base address
   std::uint32_t words;   ///< 1 for a register, more for a window (burst-accessible)
-  Access access;
+  Access access;         ///< what a bus access may do
   std::uint32_t reset;   ///< value after construction (a window of aliases: reset_of_word)
   /// Why a written value is refused (none: any value is taken). Read-only rows need
   /// none: every write to them is refused with read_only.
   ErrorCause value_check;
-  const char* description;
+  const char* description;  ///< one line for the docs' table and the firmware header
 
+  /// The byte offset just past the row: offset + 4·words.
   constexpr std::uint32_t end() const { return offset + 4 * words; }
 };
 
@@ -108,21 +115,24 @@ constexpr std::uint32_t device_id = 0x00059965;
 constexpr std::uint32_t map_version = 0x00010001;  // 1.1: CONFIG[6:5], PIN19_H, PIN20_A
 
 // ---- STATUS fields ----------------------------------------------------------------
+/// STATUS's bits (register_fields has the same as a table).
 namespace status_bits {
 constexpr std::uint32_t busy = 1u << 0;   ///< an operation is in flight (pin model only)
 constexpr std::uint32_t done = 1u << 1;   ///< results valid; W1C; drives the done IRQ
 constexpr std::uint32_t error = 1u << 2;  ///< an access was refused; W1C (clears cause too)
 constexpr int cause_shift = 8;            ///< bits 15:8: ErrorCause of the last refusal
-constexpr std::uint32_t cause_mask = 0xFFu << cause_shift;
+constexpr std::uint32_t cause_mask = 0xFFu << cause_shift;  ///< bits 15:8 in place
 }  // namespace status_bits
 
 // ---- CONTROL fields ---------------------------------------------------------------
+/// CONTROL's bits.
 namespace control_bits {
 constexpr std::uint32_t start = 1u << 0;  ///< run one operation on COS, N, R, G, B
 constexpr std::uint32_t defined = start;  ///< writing any other bit is refused
 }  // namespace control_bits
 
 // ---- CONFIG fields (read-only, fixed at construction like ROM 38's contents) ------
+/// CONFIG's fields: where each starts (config_word() packs them).
 namespace config_bits {
 constexpr int normalisation_shift = 0;  ///< bits 1:0: 0 patent, 1 energy, 2 none, 3 device-energy
 constexpr int saturation_shift = 4;     ///< bit 4: 0 clamp, 1 literal
@@ -143,6 +153,7 @@ constexpr std::uint32_t config_word(Normalisation normalisation, Saturation satu
          (static_cast<std::uint32_t>(out_frac_bits) << config_bits::out_frac_shift) |
          (static_cast<std::uint32_t>(rgb_bits) << config_bits::rgb_bits_shift);
 }
+/// The CONFIG word a target built with `config` reads.
 std::uint32_t config_word(const Config& config);
 
 
@@ -184,7 +195,9 @@ inline constexpr std::array<RegisterInfo, register_count> register_map{{
 /// Bytes the target decodes from its base address (a router's window size).
 constexpr std::uint32_t map_size = 0x8000;
 
+/// The row of `reg`.
 constexpr const RegisterInfo& info(Reg reg) { return register_map[index_of(reg)]; }
+/// The byte offset of `reg` from the base address.
 constexpr std::uint32_t offset_of(Reg reg) { return info(reg).offset; }
 
 namespace detail {
@@ -207,6 +220,7 @@ constexpr Reg operand_register(std::uint32_t index) {
   constexpr Reg block[] = {Reg::cos, Reg::n, Reg::r, Reg::g, Reg::b, Reg::control};
   return block[index];
 }
+/// Words of the OPERANDS block: COS, N, R, G, B, CONTROL.
 constexpr std::uint32_t operand_words = 6;
 /// The single register behind word `index` (0..2) of the RESULTS block.
 constexpr Reg result_register(std::uint32_t index) {

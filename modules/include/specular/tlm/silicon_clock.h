@@ -1,6 +1,7 @@
-// The device's clock period in silicon, for the TLM targets' latency annotation: an SoC
-// simulation that wants real nanoseconds constructs a target with osu018_clock_period()
-// (docs/silicon.md, "The TLM targets in real nanoseconds").
+/// \file
+/// The device's clock period in silicon, for the TLM targets' latency annotation: an SoC
+/// simulation that wants real nanoseconds constructs a target with osu018_clock_period()
+/// (docs/silicon.md, "The TLM targets in real nanoseconds").
 #pragma once
 
 #include <systemc>

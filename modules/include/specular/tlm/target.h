@@ -1,8 +1,9 @@
-// The TLM-2.0 face of the device: a 32-bit target socket, the register file of
-// register_map.h, and the `done` interrupt. Two implementations sit behind it
-// (lt_target.h: the bit-accurate core with annotated latency; pin_target.h: a
-// transactor driving the pin-level netlist), so they cannot differ in how the
-// registers behave, only in how an operation is computed and timed.
+/// \file
+/// The TLM-2.0 face of the device: a 32-bit target socket, the register file of
+/// register_map.h, and the `done` interrupt. Two implementations sit behind it
+/// (lt_target.h: the bit-accurate core with annotated latency; pin_target.h: a
+/// transactor driving the pin-level netlist), so they cannot differ in how the
+/// registers behave, only in how an operation is computed and timed.
 #pragma once
 
 #include <array>
@@ -49,7 +50,11 @@ namespace specular {
 /// of its own), and on_done_irq() calls back at each of its edges.
 class SpecularTarget : public sc_core::sc_module {
  public:
+  /// The bus: bind an initiator socket or a router's; 32-bit data, the map of
+  /// register_map.h at offsets 0 to map_size − 1.
   tlm_utils::simple_target_socket<SpecularTarget, 32> socket;
+  /// The interrupt: a level, high while STATUS.DONE is set (see SpecularTarget); may
+  /// stay unbound.
   sc_core::sc_out<bool> done_irq;
 
   /// Called at each edge of done_irq with its new level, from the process that drives
@@ -61,8 +66,11 @@ class SpecularTarget : public sc_core::sc_module {
   /// The level done_irq drives (also when it is left unbound).
   bool done_irq_level() const { return irq_level_; }
 
+  /// The configuration the target was built with (CONFIG reads it).
   const Config& config() const { return config_; }
+  /// The bus formats derived from config().widths.
   const Formats& formats() const { return formats_; }
+  /// The device's clock period T that the latencies are counted in.
   const sc_core::sc_time& clock_period() const { return period_; }
 
   /// Start → results valid for `count` pipelined operations, in clock periods:

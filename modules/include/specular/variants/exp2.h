@@ -1,8 +1,9 @@
-// Variant exp2 (docs/variants/exp2.md): cos^n as a GPU's pow computes it,
-// cos^n = 2^(n·log2 cos): ROM 5's log2 times n as multiplier 6 does in pass 1 (without
-// adder 8), then the exp2 unit (table of 2^f plus linear interpolation, the integer
-// part a shift) gives cos^n on register 9's format S14.22; ROM 38, multiplier 39 and
-// multipliers 13–15 follow as in the device. Verilog: rtl/specular_exp2.v.
+/// \file
+/// Variant exp2 (docs/variants/exp2.md): cos^n as a GPU's pow computes it,
+/// cos^n = 2^(n·log2 cos): ROM 5's log2 times n as multiplier 6 does in pass 1 (without
+/// adder 8), then the exp2 unit (table of 2^f plus linear interpolation, the integer
+/// part a shift) gives cos^n on register 9's format S14.22; ROM 38, multiplier 39 and
+/// multipliers 13–15 follow as in the device. Verilog: rtl/specular_exp2.v.
 #pragma once
 
 #include <string_view>
@@ -15,6 +16,8 @@
 namespace specular {
 namespace variants {
 
+/// Variant "exp2": cos^n = 2^(n·log2 cos) through ROM 5, multiplier 6 and the exp2
+/// unit (Exp2Table), then the device's tail (see exp2.h).
 class Exp2Variant final : public Variant {
  public:
   /// Takes the default widths, constants patent (s = 1) and the normalisations patent,
@@ -30,6 +33,7 @@ class Exp2Variant final : public Variant {
   /// shader's pow(0, n) = exp2(n·log2 0) = exp2(−∞) = 0 (ROM 5 reads log2 0 as −16, which
   /// would leave 2^−16n: 2^−16·K(1) = 33 lobe LSBs at n = 1).
   code_t cos_pow_n(const Operands& in) const { return in.cos == 0 ? 0 : exp2_.pow2(exponent(in)); }
+  /// The exp2 unit's table and arithmetic.
   const Exp2Table& exp2_table() const { return exp2_; }
 
  private:

@@ -1,11 +1,12 @@
-// Variant "schlick" (issue 26, docs/variants/schlick.md): cos^n λ by Schlick's rational
-// approximation x / (n − (n − 1)·x) (C. Schlick, Eurographics Rendering Workshop 1993;
-// Computer Graphics Forum 13(3), 1994) instead of the patent's two log2 passes, then
-// the device's tail: ROM 38's K(n), multiplier 39, multipliers 13–15.
-// Bit-accurate model of rtl/specular_schlick.v: the denominator d = n − (n − 1)·x
-// exactly (a 10 × 17-bit multiplier and a subtractor), d normalised by a leading-one
-// detector, 1/d by ReciprocalNr (table + one Newton–Raphson step), × x, rounded to
-// register 9's format S14.22.
+/// \file
+/// Variant "schlick" (issue 26, docs/variants/schlick.md): cos^n λ by Schlick's rational
+/// approximation x / (n − (n − 1)·x) (C. Schlick, Eurographics Rendering Workshop 1993;
+/// Computer Graphics Forum 13(3), 1994) instead of the patent's two log2 passes, then
+/// the device's tail: ROM 38's K(n), multiplier 39, multipliers 13–15.
+/// Bit-accurate model of rtl/specular_schlick.v: the denominator d = n − (n − 1)·x
+/// exactly (a 10 × 17-bit multiplier and a subtractor), d normalised by a leading-one
+/// detector, 1/d by ReciprocalNr (table + one Newton–Raphson step), × x, rounded to
+/// register 9's format S14.22.
 #pragma once
 
 #include <string_view>
@@ -25,6 +26,8 @@ namespace variants {
 /// allowed.
 const Config& schlick_config(const Config& config, std::string_view variant);
 
+/// Variant "schlick": Schlick's x / (n − (n − 1)·x) by ReciprocalNr and a multiplier,
+/// then ROM 38, multiplier 39 and multipliers 13–15.
 class Schlick final : public Variant {
  public:
   /// Throws std::invalid_argument for a configuration it is not built for (schlick_config).

@@ -1,10 +1,11 @@
-// Design variant us5739820 (issue 26, docs/variants/us5739820.md): cos^n λ as in US
-// patent 5,739,820 (Lentz, 1998), (1 − (1 − cos λ)·n/2^k)^(2^k), the base clamped at 0
-// and raised to 2^k by k successive squarings in one squarer (arith::square,
-// rtl/squarer.v). k = round(log2 n), so that 2^k is the power of two nearest to n
-// (exact for n a power of two). The result, rounded to register 9's format S14.22,
-// goes through ROM 38 and multiplier 39, then multipliers 13–15, as in the device.
-// rtl/specular_us5739820.v is this model in Verilog: one start every k + 1 clocks.
+/// \file
+/// Design variant us5739820 (issue 26, docs/variants/us5739820.md): cos^n λ as in US
+/// patent 5,739,820 (Lentz, 1998), (1 − (1 − cos λ)·n/2^k)^(2^k), the base clamped at 0
+/// and raised to 2^k by k successive squarings in one squarer (arith::square,
+/// rtl/squarer.v). k = round(log2 n), so that 2^k is the power of two nearest to n
+/// (exact for n a power of two). The result, rounded to register 9's format S14.22,
+/// goes through ROM 38 and multiplier 39, then multipliers 13–15, as in the device.
+/// rtl/specular_us5739820.v is this model in Verilog: one start every k + 1 clocks.
 #pragma once
 
 #include <string_view>
@@ -15,6 +16,8 @@
 namespace specular {
 namespace variants {
 
+/// Variant "us5739820": cos^n ≈ (1 − (1 − cos)·n/2^k)^(2^k) by k squarings in one
+/// squarer (US 5,739,820), then the device's tail.
 class Us5739820 final : public Variant {
  public:
   /// The squarer's fraction bits: the base 1 − x·n·2^−(16+k) is exact on them

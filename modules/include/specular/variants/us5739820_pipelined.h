@@ -1,7 +1,8 @@
-// Design variant us5739820_pipelined (docs/variants/us5739820.md): us5739820's
-// arithmetic unrolled into ten squarer stages, one start a clock
-// (rtl/specular_us5739820_pipelined.v). Every stage squares or passes y on, so the bits
-// are us5739820's: this model is that one under its own name.
+/// \file
+/// Design variant us5739820_pipelined (docs/variants/us5739820.md): us5739820's
+/// arithmetic unrolled into ten squarer stages, one start a clock
+/// (rtl/specular_us5739820_pipelined.v). Every stage squares or passes y on, so the bits
+/// are us5739820's: this model is that one under its own name.
 #pragma once
 
 #include <string_view>
@@ -11,6 +12,7 @@
 namespace specular {
 namespace variants {
 
+/// Variant "us5739820_pipelined": Us5739820's bits from ten squarer stages, one start a clock.
 class Us5739820Pipelined final : public Variant {
  public:
   /// Takes and refuses what Us5739820 does (the same std::invalid_argument).

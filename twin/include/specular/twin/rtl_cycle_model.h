@@ -1,6 +1,7 @@
-// The RTL twin as plain C++: rtl/specular_device.v verilated without SystemC and
-// clocked here edge by edge, with the protocol of DeviceHarness (spec §3). No kernel,
-// no sc_signals: the fast cycle-accurate model (docs/rtl.md, docs/performance.md).
+/// \file
+/// The RTL twin as plain C++: rtl/specular_device.v verilated without SystemC and
+/// clocked here edge by edge, with the protocol of DeviceHarness (spec §3). No kernel,
+/// no sc_signals: the fast cycle-accurate model (docs/rtl.md, docs/performance.md).
 #pragma once
 
 #include <cstddef>
@@ -12,7 +13,8 @@
 
 namespace specular {
 
-/// Clocks the verilated device one half period at a time. A start rises with a
+/// The RTL twin as a plain C++ cycle model: clocks the verilated device one half period
+/// at a time. A start rises with a
 /// rising clock edge; cos λ is presented with it, and n, R, G, B (strobes 30–33) a
 /// quarter period before it when they change. Results are sampled at the rising edge
 /// of 35, register 1 and register 9's pass-1 value at the rising edge of select 36,
@@ -43,6 +45,7 @@ class RtlCycleModel {
   /// Half clock periods simulated since construction.
   std::uint64_t half_periods() const;
 
+  /// The configuration the model was built with.
   const Config& config() const { return config_; }
   /// Whether this model runs a verilation specialised to config() (FIXED_CONFIG = 1).
   bool fixed() const;

@@ -1,6 +1,7 @@
-// The RTL twin behind the pin interface: rtl/specular_device.v, verilated into C++
-// and evaluated from this SystemC module, so that DeviceHarness, the protocol checker
-// and specular_tb drive it exactly as they drive the SystemC netlist.
+/// \file
+/// The RTL twin behind the pin interface: rtl/specular_device.v, verilated into C++
+/// and evaluated from this SystemC module, so that DeviceHarness, the protocol checker
+/// and specular_tb drive it exactly as they drive the SystemC netlist.
 #pragma once
 
 #include "specular/device_harness.h"
@@ -21,9 +22,9 @@ class RtlDevice : public RtlDeviceBase {
   ~RtlDevice() override;
 
   // ---- what the protocol checker watches besides the pins (observation outputs) ----
-  wire q41{"q41"};
-  wire q42{"q42"};
-  wire nand45{"nand45"};
+  wire q41{"q41"};        ///< control unit 16: flip-flop 41's Q (start latched)
+  wire q42{"q42"};        ///< control unit 16: flip-flop 42's Q (pass 1 pending)
+  wire nand45{"nand45"};  ///< control unit 16: NAND 45's output
 
   /// Watches the pins and control unit 16, as in SpecularDevice (report_ids.h).
   ProtocolChecker protocol_checker{"protocol_checker"};
@@ -32,6 +33,7 @@ class RtlDevice : public RtlDeviceBase {
   static std::unique_ptr<Verilated> make_model(const Config& config);
 };
 
+/// The harness of the RTL twin: the `rtl` pin-level model of specular_tb.
 using RtlHarness = DeviceHarness<RtlDevice>;
 extern template class DeviceHarness<RtlDevice>;  // instantiated in rtl_device.cpp
 

@@ -1,7 +1,8 @@
-// What the two RTL twins behind the pin interface share (RtlDevice: the drawn device,
-// RtlSyncDevice: the synchronous variant): the pins, the Config they are verilated for,
-// the one process that evaluates the verilated model, and Verilator's VCD. Each twin
-// adds only its own nets and its verilated class (twin/src/rtl_model.h).
+/// \file
+/// What the two RTL twins behind the pin interface share (RtlDevice: the drawn device,
+/// RtlSyncDevice: the synchronous variant): the pins, the Config they are verilated for,
+/// the one process that evaluates the verilated model, and Verilator's VCD. Each twin
+/// adds only its own nets and its verilated class (twin/src/rtl_model.h).
 #pragma once
 
 #include <memory>
@@ -13,7 +14,8 @@
 
 namespace specular {
 
-/// Pins 17–35 (DevicePins), as SpecularDevice has them. Inside, the
+/// What the two RTL twins behind the pins share: pins 17–35 (DevicePins), as
+/// SpecularDevice has them. Inside, the
 /// verilated model (Verilator's C++ output) and one SC_METHOD, sensitive to the
 /// input pins, that copies the pins into the model, evaluates it and writes the
 /// outputs that changed back, sign-extending the signed buses. One process activation per input
@@ -30,9 +32,13 @@ class RtlDeviceBase : public DevicePins {
  public:
   ~RtlDeviceBase() override;
 
+  /// The configuration the twin was built with.
   const Config& config() const { return config_; }
+  /// The bus formats: the default widths', the only ones the twins are verilated at.
   const Formats& formats() const { return formats_; }
+  /// The code to tie pin 19 to: h in multiplexer 4's format (pin19_code).
   code_t constant_h19() const { return pin19_code(config_); }
+  /// The code to tie pin 20 to: a in register 9's format (pin20_code).
   code_t constant_a20() const { return pin20_code(config_); }
 
   /// The SystemC trace file gets nothing from the twin: its nets are traced by
@@ -42,14 +48,14 @@ class RtlDeviceBase : public DevicePins {
   /// Trace every net of the RTL (pins, Fig. 1's buses, the control unit) to `path`:
   /// called before sc_start, from the start of simulation on; called during the
   /// simulation (after allow_tracing()), from now on, until close_vcd() — a window
-  /// (specular_tb --trace-ops, --trace-failures). std::logic_error otherwise.
+  /// (`specular_tb --trace-ops`, `--trace-failures`). std::logic_error otherwise.
   /// A name ending in ".fst" gets GTKWave's FST, written by Verilator (the model
-  /// verilated with --trace-fst); during the simulation, only in the format
+  /// verilated with `--trace-fst`); during the simulation, only in the format
   /// allow_tracing() chose.
   void open_vcd(const std::string& path);
   /// Before sc_start: let open_vcd() be called later, during the simulation (the pins
   /// a trace shows as they change are made to wake the model from the start), in FST
-  /// if `fst` (the model verilated with --trace-fst is used from the start), else VCD.
+  /// if `fst` (the model verilated with `--trace-fst` is used from the start), else VCD.
   void allow_tracing(bool fst = false);
   /// Writes the last instant and closes the file open_vcd() opened (if any).
   void close_vcd();
@@ -58,11 +64,11 @@ class RtlDeviceBase : public DevicePins {
   bool fixed() const;
 
   // ---- what the harness watches (observation outputs both twins have) ----
-  wire select36{"select36"};
-  bus_signal reg1_q{"reg1_q"};
-  bus_signal reg9_q{"reg9_q"};
-  bus_signal rom38_k{"rom38_k"};
-  bus_signal mul39_norm{"mul39_norm"};
+  wire select36{"select36"};            ///< control output 36: multiplexer select
+  bus_signal reg1_q{"reg1_q"};          ///< register 1's output (U1.16)
+  bus_signal reg9_q{"reg9_q"};          ///< register 9's output (S14.22)
+  bus_signal rom38_k{"rom38_k"};        ///< ROM 38's word s·K(n) (U9.16)
+  bus_signal mul39_norm{"mul39_norm"};  ///< multiplier 39's output (S10.20)
 
  protected:
   struct Verilated;  // the verilated model, its VCD writer, the pins' channels (rtl_model.h)

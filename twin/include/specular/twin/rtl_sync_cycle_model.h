@@ -1,7 +1,8 @@
-// The synchronous variant of the device (rtl/specular_device_sync.v) as plain C++:
-// verilated without SystemC and without trace code, clocked here with its protocol
-// (docs/rtl.md, "The synchronous variant"). The fast cycle model: one clock, so each
-// clock period costs two evaluations and nothing iterates over gated clocks.
+/// \file
+/// The synchronous variant of the device (rtl/specular_device_sync.v) as plain C++:
+/// verilated without SystemC and without trace code, clocked here with its protocol
+/// (docs/rtl.md, "The synchronous variant"). The fast cycle model: one clock, so each
+/// clock period costs two evaluations and nothing iterates over gated clocks.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +14,8 @@
 
 namespace specular {
 
-/// Clocks the verilated synchronous device one half period at a time. Start (27),
+/// The synchronous variant as a plain C++ cycle model: clocks the verilated device one
+/// half period at a time. Start (27),
 /// pin 17 and, when n, R, G, B change, pins 18, 21–23 with their loads 30–33 are levels
 /// set a quarter period before the start edge and (start and loads) cleared a quarter
 /// period after it. Register 1 and register 9's pass 1 are sampled at the rising edge
@@ -30,6 +32,9 @@ namespace specular {
 /// specialised build runs on it unless `allow_fixed` is false.
 class RtlSyncCycleModel {
  public:
+  /// The model for `config` (a specialised verilation if one matches and `allow_fixed`);
+  /// throws std::invalid_argument for widths other than the defaults or a Config the
+  /// core refuses.
   explicit RtlSyncCycleModel(const Config& config = Config{}, bool allow_fixed = true);
   ~RtlSyncCycleModel();
   RtlSyncCycleModel(const RtlSyncCycleModel&) = delete;
@@ -50,6 +55,7 @@ class RtlSyncCycleModel {
   /// Clock edges (half periods) simulated since construction.
   std::uint64_t half_periods() const;
 
+  /// The configuration the model was built with.
   const Config& config() const { return config_; }
   /// Whether this model runs a verilation specialised to config() (FIXED_CONFIG = 1).
   bool fixed() const;

@@ -1,7 +1,8 @@
-// The synchronous variant behind the pin interface: rtl/specular_device_sync.v,
-// verilated into C++ (traced) and evaluated from this SystemC module, so that
-// DeviceHarness (with the variant's protocol) and specular_tb --model rtl-sync drive it
-// as they drive the drawn device's twin (RtlDevice).
+/// \file
+/// The synchronous variant behind the pin interface: rtl/specular_device_sync.v,
+/// verilated into C++ (traced) and evaluated from this SystemC module, so that
+/// DeviceHarness (with the variant's protocol) and `specular_tb --model rtl-sync` drive it
+/// as they drive the drawn device's twin (RtlDevice).
 #pragma once
 
 #include "specular/device_harness.h"
@@ -19,6 +20,7 @@ namespace specular {
 /// refused with std::invalid_argument.
 class RtlSyncDevice : public RtlDeviceBase {
  public:
+  /// Start and the loads are levels sampled at the rising clock edge (is_synchronous_device).
   static constexpr bool synchronous = true;
 
   /// `real_views` is refused when true, as in RtlDevice: the waveform is Verilator's.
@@ -27,12 +29,13 @@ class RtlSyncDevice : public RtlDeviceBase {
   ~RtlSyncDevice() override;
 
   // ---- what the harness watches besides RtlDeviceBase's (observation outputs) ----
-  wire pass1{"pass1"};
+  wire pass1{"pass1"};  ///< the sequencer's pass-1 state (obs_pass1 of rtl/control_unit_sync.v)
 
  private:
   static std::unique_ptr<Verilated> make_model(const Config& config);
 };
 
+/// The harness of the synchronous variant: `specular_tb --model rtl-sync`.
 using RtlSyncHarness = DeviceHarness<RtlSyncDevice>;
 extern template class DeviceHarness<RtlSyncDevice>;  // instantiated in rtl_sync_device.cpp
 

@@ -1,4 +1,5 @@
-// `rtl`: the TLM target computed by the RTL twin, clocked inside b_transport.
+/// \file
+/// `rtl`: the TLM target computed by the RTL twin, clocked inside b_transport.
 #pragma once
 
 #include <memory>
@@ -10,6 +11,9 @@ namespace specular {
 
 class RtlCycleModel;
 
+/// The `rtl` target: SpecularTarget's register file computed by the RTL twin, clocked
+/// inside b_transport.
+///
 /// The same register file as `lt` and `pin` (SpecularTarget), computed by the
 /// verilated RTL (RtlCycleModel: plain C++, no SystemC process): each START or
 /// BATCH_COS write clocks the twin edge by edge, inside b_transport, as the pin harness
@@ -21,6 +25,8 @@ class RtlCycleModel;
 /// RTL was verilated at are refused with std::invalid_argument.
 class SpecularRtlTarget : public SpecularTarget {
  public:
+  /// A target over the RTL twin verilated for `config`; `clock_period` scales the
+  /// annotated latency. Throws std::invalid_argument for widths the RTL was not verilated at.
   explicit SpecularRtlTarget(sc_core::sc_module_name name, const Config& config = Config{},
                              const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS));
   ~SpecularRtlTarget() override;

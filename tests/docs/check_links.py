@@ -23,13 +23,6 @@ import urllib.parse
 
 README_MAX_LINES = 200
 
-# Pages another helper of issue 38 adds on its own branch: while absent, a link to one
-# is reported as pending (not an error); once the file exists it is checked like any
-# other. Empty this once they are merged.
-PENDING = {
-    "docs/api/README.md": "the API reference (issue 38 item 2), written on another branch",
-}
-
 FENCE = re.compile(r"^\s{0,3}(```|~~~)")
 INLINE_CODE = re.compile(r"(`+)(.+?)\1")
 # [text](target) and ![alt](target); the text may hold one level of brackets (images in links).
@@ -104,8 +97,7 @@ def links_of(path):
 
 
 def check_link(root, md, target):
-    """None when `target` (a link in file `md`) resolves, else what is wrong. Returns
-    ("pending", why) for a link to a PENDING page that is still absent."""
+    """None when `target` (a link in file `md`) resolves, else what is wrong."""
     target = target.strip()
     if target.startswith("<") and target.endswith(">"):
         target = target[1:-1]
@@ -125,8 +117,6 @@ def check_link(root, md, target):
     if relative.startswith(".." + os.sep) or relative == "..":
         return f"'{target}' points outside the repository"
     if not os.path.exists(resolved):
-        if relative in PENDING:
-            return ("pending", f"'{target}': {relative} does not exist yet ({PENDING[relative]})")
         return f"'{target}': no file or folder {relative}"
     if anchor:
         if not resolved.endswith(".md") or os.path.isdir(resolved):
@@ -173,15 +163,13 @@ def main(argv):
         dirs.sort()
         pages += [os.path.join(folder, f) for f in sorted(files) if f.endswith(".md")]
 
-    broken, pending, links = [], [], 0
+    broken, links = [], 0
     for md in pages:
         for number, target in links_of(md):
             links += 1
             problem = check_link(root, md, target)
             where = f"{os.path.relpath(md, root)}:{number}"
-            if isinstance(problem, tuple):
-                pending.append(f"{where}: {problem[1]}")
-            elif problem:
+            if problem:
                 broken.append(f"{where}: {problem}")
 
     broken += unindexed(root)
@@ -192,12 +180,10 @@ def main(argv):
         broken.append(f"README.md:{readme_lines}: {readme_lines} lines, more than the front "
                       f"page's {README_MAX_LINES} (move the detail into a docs/ page)")
 
-    for line in pending:
-        print(f"pending: {line}")
     for line in broken:
         print(line)
     print(f"check_links: {len(pages)} pages, {links} links, README.md {readme_lines} lines: "
-          f"{len(broken)} broken, {len(pending)} pending")
+          f"{len(broken)} broken")
     return 1 if broken else 0
 
 

@@ -99,7 +99,7 @@ inline code_t mux3(const FormatSet& f, bool select36, code_t reg1, code_t reg9) 
   return select36 ? reg9 : reg1 << (f.reg9.frac_bits - f.cos.frac_bits);
 }
 
-// ---- Leading-one normaliser (rtl/leading_one_normaliser.v) ------------------------
+// ---- Leading-one normaliser (rtl/primitives/leading_one_normaliser.v) ------------------------
 /// What a leading-one detector and its shifter give: the index of the highest one of a
 /// `width`-bit code x > 0 and x shifted left until that one sits at bit width − 1. ROM 5
 /// addresses its mantissa table with it; the design variants normalise a divisor with it.
@@ -276,7 +276,7 @@ inline code_t mul_rgb(const FormatSet& f, code_t norm39, code_t intensity) {
 
 // ---- Squarer (design variant us5739820: US 5,739,820's repeated squaring) ---------
 /// y² for a code y of the unsigned format U1.F (0 ≤ y ≤ 1): F fraction bits dropped,
-/// rounding half up (multiply_round_saturate; y² ≤ 1 never saturates). rtl/squarer.v.
+/// rounding half up (multiply_round_saturate; y² ≤ 1 never saturates). rtl/design_space/squarer.v.
 inline code_t square(const FixedFormat& format, code_t y) {
   return multiply_round_saturate(format, y, y, format.frac_bits);
 }

@@ -3,7 +3,7 @@
 /// cos^n = 2^(n·log2 cos): ROM 5's log2 times n as multiplier 6 does in pass 1 (without
 /// adder 8), then the exp2 unit (table of 2^f plus linear interpolation, the integer
 /// part a shift) gives cos^n on register 9's format S14.22; ROM 38, multiplier 39 and
-/// multipliers 13–15 follow as in the device. Verilog: rtl/specular_exp2.v.
+/// multipliers 13–15 follow as in the device. Verilog: rtl/design_space/specular_exp2.v.
 #pragma once
 
 #include <string_view>

@@ -1,5 +1,5 @@
 /// \file
-/// The exp2 unit (rtl/exp2_unit.v): 2^x for x ≤ 0, the usual hardware exp2 (Tang, ACM
+/// The exp2 unit (rtl/design_space/exp2_unit.v): 2^x for x ≤ 0, the usual hardware exp2 (Tang, ACM
 /// TOMS 15(2), 1989; Oberman and Siu, "A high-performance area-efficient multifunction
 /// interpolator", ARITH-17, 2005; Piñeiro, Oberman, Muller and Bruguera, IEEE Trans.
 /// Computers 54(3), 2005): x splits into its integer part, a right shift, and its fraction
@@ -28,7 +28,7 @@ struct Exp2Organisation {
   int out_frac_bits = 22;    ///< the result's fraction bits (register 9's format)
 };
 
-/// 2^x on integer codes: the table and the arithmetic of rtl/exp2_unit.v, bit for bit.
+/// 2^x on integer codes: the table and the arithmetic of rtl/design_space/exp2_unit.v, bit for bit.
 class Exp2Table {
  public:
   /// Fills the 2^addr_bits words for `organisation`.

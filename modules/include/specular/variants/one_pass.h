@@ -8,8 +8,8 @@
 ///
 /// Two Verilog tops share this model (the same bits, different registers):
 /// \code{.unparsed}
-///   one_pass            rtl/specular_one_pass.v: both passes and the tail in one clock;
-///   one_pass_pipelined  rtl/specular_one_pass_pipelined.v: a register between the passes
+///   one_pass            rtl/design_space/specular_one_pass.v: both passes and the tail in one clock;
+///   one_pass_pipelined  rtl/design_space/specular_one_pass_pipelined.v: a register between the passes
 ///                       and before each multiplier of the tail.
 /// \endcode
 #pragma once

@@ -3,7 +3,7 @@
 /// normalised to m ∈ [1, 2) by a leading-one detector (arith::leading_one), read from a
 /// small table at m's first fraction bits and refined by one Newton–Raphson step
 /// y1 = y0·(2 − m·y0), which squares the table's relative error. Bit-accurate model of
-/// rtl/reciprocal_nr.v; the table is the image specular_romgen writes (recip.hex).
+/// rtl/design_space/reciprocal_nr.v; the table is the image specular_romgen writes (recip.hex).
 ///
 /// Sizes (docs/variants/schlick.md): a table word is within 2^-11 of 1/m relatively, so
 /// one step leaves 1 − m·y1 = e0² ∈ [0, 2^-22]; a bias of 2^-23 centres that one-sided
@@ -17,7 +17,7 @@
 namespace specular {
 namespace variants {
 
-/// 1/m by a 1024-word table and one Newton–Raphson step (rtl/reciprocal_nr.v).
+/// 1/m by a 1024-word table and one Newton–Raphson step (rtl/design_space/reciprocal_nr.v).
 class ReciprocalNr {
  public:
   static constexpr int mantissa_bits = 26;    ///< the divisor m as U1.25, leading one at bit 25

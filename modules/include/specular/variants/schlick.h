@@ -3,7 +3,7 @@
 /// approximation x / (n − (n − 1)·x) (C. Schlick, Eurographics Rendering Workshop 1993;
 /// Computer Graphics Forum 13(3), 1994) instead of the patent's two log2 passes, then
 /// the device's tail: ROM 38's K(n), multiplier 39, multipliers 13–15.
-/// Bit-accurate model of rtl/specular_schlick.v: the denominator d = n − (n − 1)·x
+/// Bit-accurate model of rtl/design_space/specular_schlick.v: the denominator d = n − (n − 1)·x
 /// exactly (a 10 × 17-bit multiplier and a subtractor), d normalised by a leading-one
 /// detector, 1/d by ReciprocalNr (table + one Newton–Raphson step), × x, rounded to
 /// register 9's format S14.22.
@@ -36,7 +36,7 @@ class Schlick final : public Variant {
   VariantResult run(const Operands& in) const override;
 
   /// The denominator d = n − (n − 1)·x as a U10.16 code: n·2^16 − (n − 1)·cos, exact
-  /// (rtl/schlick_denominator.v).
+  /// (rtl/design_space/schlick_denominator.v).
   static std::uint64_t denominator(code_t cos, code_t n);
   /// Throws std::out_of_range unless cos is 0 … 2^16 and n 1 … 1000 (register 1's and 2's).
   static void check_operands(const Operands& in, std::string_view variant);

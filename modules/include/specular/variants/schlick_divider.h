@@ -1,10 +1,10 @@
 /// \file
 /// Variant "schlick_divider" (issue 26, docs/variants/schlick.md): Schlick's rational
 /// cos^n x / (n − (n − 1)·x) as variant schlick, the quotient by a restoring divider, one
-/// bit per clock (rtl/restoring_divider.v), instead of a reciprocal table and
+/// bit per clock (rtl/design_space/restoring_divider.v), instead of a reciprocal table and
 /// multipliers. A restoring divider's 24 bits are floor(cos·2^23 / d) exactly, so register
 /// 9 = (that + 1) / 2 is x/d rounded half up to S14.22: within ½ LSB of the formula.
-/// Bit-accurate model of rtl/specular_schlick_divider.v.
+/// Bit-accurate model of rtl/design_space/specular_schlick_divider.v.
 #pragma once
 
 #include <string_view>

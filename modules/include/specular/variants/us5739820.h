@@ -2,10 +2,10 @@
 /// Design variant us5739820 (issue 26, docs/variants/us5739820.md): cos^n λ as in US
 /// patent 5,739,820 (Lentz, 1998), (1 − (1 − cos λ)·n/2^k)^(2^k), the base clamped at 0
 /// and raised to 2^k by k successive squarings in one squarer (arith::square,
-/// rtl/squarer.v). k = round(log2 n), so that 2^k is the power of two nearest to n
+/// rtl/design_space/squarer.v). k = round(log2 n), so that 2^k is the power of two nearest to n
 /// (exact for n a power of two). The result, rounded to register 9's format S14.22,
 /// goes through ROM 38 and multiplier 39, then multipliers 13–15, as in the device.
-/// rtl/specular_us5739820.v is this model in Verilog: one start every k + 1 clocks.
+/// rtl/design_space/specular_us5739820.v is this model in Verilog: one start every k + 1 clocks.
 #pragma once
 
 #include <string_view>

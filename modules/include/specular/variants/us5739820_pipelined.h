@@ -1,7 +1,7 @@
 /// \file
 /// Design variant us5739820_pipelined (docs/variants/us5739820.md): us5739820's
 /// arithmetic unrolled into ten squarer stages, one start a clock
-/// (rtl/specular_us5739820_pipelined.v). Every stage squares or passes y on, so the bits
+/// (rtl/design_space/specular_us5739820_pipelined.v). Every stage squares or passes y on, so the bits
 /// are us5739820's: this model is that one under its own name.
 #pragma once
 

@@ -1,5 +1,5 @@
 /// \file
-/// The RTL twin as plain C++: rtl/specular_device.v verilated without SystemC and
+/// The RTL twin as plain C++: rtl/device/specular_device.v verilated without SystemC and
 /// clocked here edge by edge, with the protocol of DeviceHarness (spec §3). No kernel,
 /// no sc_signals: the fast cycle-accurate model (docs/rtl.md, docs/performance.md).
 #pragma once

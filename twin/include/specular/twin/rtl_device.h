@@ -1,5 +1,5 @@
 /// \file
-/// The RTL twin behind the pin interface: rtl/specular_device.v, verilated into C++
+/// The RTL twin behind the pin interface: rtl/device/specular_device.v, verilated into C++
 /// and evaluated from this SystemC module, so that DeviceHarness, the protocol checker
 /// and specular_tb drive it exactly as they drive the SystemC netlist.
 #pragma once

@@ -1,5 +1,5 @@
 /// \file
-/// The synchronous variant of the device (rtl/specular_device_sync.v) as plain C++:
+/// The synchronous variant of the device (rtl/device/specular_device_sync.v) as plain C++:
 /// verilated without SystemC and without trace code, clocked here with its protocol
 /// (docs/rtl.md, "The synchronous variant"). The fast cycle model: one clock, so each
 /// clock period costs two evaluations and nothing iterates over gated clocks.

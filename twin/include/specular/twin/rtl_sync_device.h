@@ -1,5 +1,5 @@
 /// \file
-/// The synchronous variant behind the pin interface: rtl/specular_device_sync.v,
+/// The synchronous variant behind the pin interface: rtl/device/specular_device_sync.v,
 /// verilated into C++ (traced) and evaluated from this SystemC module, so that
 /// DeviceHarness (with the variant's protocol) and `specular_tb --model rtl-sync` drive it
 /// as they drive the drawn device's twin (RtlDevice).
@@ -29,7 +29,7 @@ class RtlSyncDevice : public RtlDeviceBase {
   ~RtlSyncDevice() override;
 
   // ---- what the harness watches besides RtlDeviceBase's (observation outputs) ----
-  wire pass1{"pass1"};  ///< the sequencer's pass-1 state (obs_pass1 of rtl/control_unit_sync.v)
+  wire pass1{"pass1"};  ///< the sequencer's pass-1 state (obs_pass1 of rtl/device/control_unit_sync.v)
 
  private:
   static std::unique_ptr<Verilated> make_model(const Config& config);

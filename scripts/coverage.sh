@@ -9,7 +9,9 @@
 #   scripts/coverage.sh all [--build DIR] [--out DIR]        build, run 0/1, merge (one machine)
 #   scripts/coverage.sh check-exclusions                     CI: every exclusion names a line
 #
-# The build (default build-coverage) is its own folder: -O1 --coverage (-O0 doubles the
+# The build (default build-coverage) is its own folder: -O1 --coverage, with
+# -fprofile-update=atomic (the study's worker threads share arith.h's counters: without it
+# a count can tear, and gcovr 5.2 stops at the negative count gcov then prints; -O0 doubles the
 # quick suite's time on the verilated models for little gain in line attribution; the
 # optimiser can merge a branch or two, which the report then shows as such). A slice runs
 # every quick test I, I+N, I+2N, ... (ctest -I) with GCOV_PREFIX pointing at a folder of
@@ -76,10 +78,12 @@ do_build() {
   local launcher=()
   command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Coverage "${launcher[@]}" "${extra_cmake[@]}" \
-    "-DCMAKE_CXX_FLAGS_COVERAGE=-O1 -g --coverage" "-DCMAKE_C_FLAGS_COVERAGE=-O1 -g --coverage" \
+    "-DCMAKE_CXX_FLAGS_COVERAGE=-O1 -g --coverage -fprofile-update=atomic" "-DCMAKE_C_FLAGS_COVERAGE=-O1 -g --coverage -fprofile-update=atomic" \
     "-DCMAKE_EXE_LINKER_FLAGS_COVERAGE=--coverage" "-DCMAKE_SHARED_LINKER_FLAGS_COVERAGE=--coverage" \
     >/dev/null
-  cmake --build "$build" -j"$(nproc)" ${targets:+--target $targets}
+  # No ccache base_dir: it rewrites the compile's paths relative to the build folder, and
+  # gcov, run on the copies in a slice's GCOV_PREFIX folder, then finds no source file.
+  env -u CCACHE_BASEDIR cmake --build "$build" -j"$(nproc)" ${targets:+--target $targets}
 }
 
 do_run() {

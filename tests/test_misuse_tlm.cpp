@@ -434,5 +434,19 @@ TEST_P(MisuseTlm, StartWhileBusyWaitsItsTurnAndTheRunningOperationIsIntact) {
 
 INSTANTIATE_TEST_SUITE_P(BothTargets, MisuseTlm, testing::Values(Kind::lt, Kind::pin), kind_name);
 
+// A target counts its latencies in clock periods: a zero period would make every
+// annotated delay zero, so construction refuses it and names the value (issue 37: the
+// one line of the constructor no test reached).
+TEST(MisuseTlmConstruction, AClockPeriodOfZeroIsRefusedNamingIt) {
+  try {
+    SpecularLtTarget target("target", Config{}, sc_core::SC_ZERO_TIME);
+    FAIL() << "a zero clock period was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("clock period 0 s"), std::string::npos) << what;
+    EXPECT_NE(what.find("must be positive"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace specular

@@ -437,6 +437,22 @@ INSTANTIATE_TEST_SUITE_P(BothTargets, MisuseTlm, testing::Values(Kind::lt, Kind:
 // A target counts its latencies in clock periods: a zero period would make every
 // annotated delay zero, so construction refuses it and names the value (issue 37: the
 // one line of the constructor no test reached).
+// Every bus a register holds must fit its 32 bits: pins 24-26 widened to S18.14 are
+// 1 + 18 + 14 = 33 bits, and construction refuses them naming the format and its width.
+TEST(MisuseTlmConstruction, AFormatWiderThanItsRegisterIsRefusedNamingIt) {
+  Config config;
+  config.widths.out_frac_bits = 14;
+  try {
+    SpecularLtTarget target("target", config);
+    FAIL() << "a 33-bit OUT format was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("OUT format"), std::string::npos) << what;
+    EXPECT_NE(what.find("is 33 bits wide"), std::string::npos) << what;
+    EXPECT_NE(what.find("TLM target"), std::string::npos) << what;
+  }
+}
+
 TEST(MisuseTlmConstruction, AClockPeriodOfZeroIsRefusedNamingIt) {
   try {
     SpecularLtTarget target("target", Config{}, sc_core::SC_ZERO_TIME);

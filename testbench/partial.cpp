@@ -1,8 +1,6 @@
 #include "partial.h"
 
 #include <algorithm>
-#include <fstream>
-#include <map>
 #include <optional>
 #include <utility>
 
@@ -116,8 +114,6 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
   }
   const PartialFile& first = parts.front();
   const std::size_t count = first.shard.count;
-  std::vector<const PartialFile*> by_index;
-  for (const PartialFile& p : parts) by_index.push_back(&p);
   const Json& settings = first.json.at("settings");
   RunDescription run;
   try {
@@ -130,8 +126,8 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
   ShardTiming timing;  // summed CPU; wall: the longest shard
   Json shards = Json::array();
   bool any = false;
-  for (std::size_t i = 0; i < by_index.size(); ++i) {
-    const PartialFile* p = by_index[i];
+  for (std::size_t i = 0; i < parts.size(); ++i) {  // in shard order (read_complete_set)
+    const PartialFile* p = &parts[i];
     const Summary& s = summaries[i];
     total.count += s.count;
     total.failures += s.failures;

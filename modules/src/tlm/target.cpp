@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "specular/report_ids.h"
+#include "specular/tlm/response_name.h"
 
 namespace specular {
 
@@ -48,19 +49,6 @@ const char* command_name(tlm::tlm_command command) {
     case tlm::TLM_IGNORE_COMMAND: return "ignore";
   }
   return "unknown command";
-}
-
-const char* response_name(tlm::tlm_response_status status) {
-  switch (status) {
-    case tlm::TLM_OK_RESPONSE: return "TLM_OK_RESPONSE";
-    case tlm::TLM_INCOMPLETE_RESPONSE: return "TLM_INCOMPLETE_RESPONSE";
-    case tlm::TLM_GENERIC_ERROR_RESPONSE: return "TLM_GENERIC_ERROR_RESPONSE";
-    case tlm::TLM_ADDRESS_ERROR_RESPONSE: return "TLM_ADDRESS_ERROR_RESPONSE";
-    case tlm::TLM_COMMAND_ERROR_RESPONSE: return "TLM_COMMAND_ERROR_RESPONSE";
-    case tlm::TLM_BURST_ERROR_RESPONSE: return "TLM_BURST_ERROR_RESPONSE";
-    case tlm::TLM_BYTE_ENABLE_ERROR_RESPONSE: return "TLM_BYTE_ENABLE_ERROR_RESPONSE";
-  }
-  return "unknown response";
 }
 
 /// Registers whose sub-word writes merge into the stored word (docs/integration.md).

@@ -22,12 +22,15 @@
 # is unhit or the line/branch goals of modules/src are missed (goals: docs/testing.md).
 # Exclusions: scripts/coverage_exclusions.tsv, one line each: file, the excluded line's
 # text (exact, stripped), the reason; they become gcovr --exclude-lines-by-pattern and are
-# listed with their reasons in the report (exclusions.md).
+# listed with their reasons in the report (exclusions.md). Branch-only exclusions (the line
+# stays counted, its branches do not): scripts/coverage_branch_exclusions.tsv, a regular
+# expression and the reason each, for gcovr --exclude-branches-by-pattern.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 die() { echo "coverage.sh: error: $*" >&2; exit 2; }
 exclusions="$root/scripts/coverage_exclusions.tsv"
+branch_exclusions="$root/scripts/coverage_branch_exclusions.tsv"
 line_goal=98 branch_goal=90
 
 build="$root/build-coverage" out="$root/coverage-report" shard="0/1" partial="" tests="" targets=""
@@ -60,6 +63,33 @@ print("|".join(r"\s*" + re.escape(t) + r"\s*" for t in texts) or "a^")
 EOF
 }
 
+# The branch-only exclusions as one regular expression for gcovr.
+branch_exclusion_pattern() {
+  /usr/bin/python3 - "$branch_exclusions" <<'EOF'
+import sys
+patterns = [l.rstrip("\n").split("\t")[0] for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+print("|".join(r"\s*(?:" + p + r")\s*" for p in patterns) or "a^")
+EOF
+}
+
+check_branch_exclusions() {  # every branch exclusion matches a line of modules/ or twin/, with a reason
+  /usr/bin/python3 - "$branch_exclusions" "$root" <<'EOF'
+import pathlib, re, sys
+status = 0
+sources = [p for d in ("modules", "twin") for p in pathlib.Path(sys.argv[2], d).rglob("*") if p.suffix in (".cpp", ".h")]
+lines = [l.strip() for p in sources for l in p.read_text(errors="replace").splitlines()]
+entries = [l.rstrip("\n").split("\t") for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+for entry in entries:
+    if len(entry) < 2 or not entry[1].strip():
+        print(f"coverage.sh: branch exclusion without a reason: {entry[0]}", file=sys.stderr); status = 1
+    if not any(re.fullmatch(entry[0], l) for l in lines):
+        print(f"coverage.sh: branch exclusion matches no line of modules/ or twin/: '{entry[0]}'", file=sys.stderr); status = 1
+if status == 0:
+    print(f"coverage.sh: every branch exclusion of {len(entries)} matches a line, with a reason")
+sys.exit(status)
+EOF
+}
+
 check_exclusions() {  # every exclusion names a line that exists, with a reason
   local status=0 file text reason
   while IFS=$'\t' read -r file text reason; do
@@ -71,6 +101,7 @@ check_exclusions() {  # every exclusion names a line that exists, with a reason
     fi
   done <"$exclusions"
   ((status == 0)) && echo "coverage.sh: every exclusion of $(grep -cv '^#' "$exclusions") names a line of its file, with a reason"
+  check_branch_exclusions || status=1
   return $status
 }
 
@@ -105,6 +136,7 @@ do_run() {
   gcovr -r "$root" --object-directory "$prefix$build" "$prefix$build" \
     --filter "$root/modules/" --filter "$root/twin/src/" --filter "$root/twin/include/" \
     --exclude-lines-by-pattern "$(exclusion_pattern)" --exclude-unreachable-branches \
+    --exclude-branches-by-pattern "$(branch_exclusion_pattern)" \
     --exclude-throw-branches --json "$partial"
   rm -rf "$prefix"
 }
@@ -126,6 +158,9 @@ do_merge() {
     echo "# Exclusions (scripts/coverage_exclusions.tsv)"; echo
     echo "| file | line | reason |"; echo "|---|---|---|"
     grep -v '^#' "$exclusions" | awk -F'\t' 'NF {printf "| %s | `%s` | %s |\n", $1, $2, $3}'
+    echo; echo "Branches only (scripts/coverage_branch_exclusions.tsv): the line is counted, its branches are not."
+    echo; echo "| line pattern | reason |"; echo "|---|---|"
+    grep -v '^#' "$branch_exclusions" | awk -F'\t' 'NF {printf "| `%s` | %s |\n", $1, $2}'
   } >"$out/exclusions.md"
   local status=0 lines branches
   lines=$(sed -n 's/^lines: \([0-9.]*\)%.*/\1/p' "$out/modules_src_summary.txt")

@@ -16,7 +16,7 @@ const std::string binary_dir = SPECULAR_BINARY_DIR;
 // Neither the core's archive nor the program needs anything of SystemC.
 TEST(CoreKernelFree, TheCoreLibraryAndAPlainMainOnItNeedNoSystemC) {
   const auto dir = specular::testing_support::fresh_directory("run");
-  const std::string archive = binary_dir + "/modules/libspecular_core.a";
+  const std::string archive = SPECULAR_CORE_LIBRARY;  // the archive, or the .so of a shared build
   auto outcome = specular::testing_support::run_command("nm -u -C '" + archive + "'", dir);
   ASSERT_EQ(outcome.status, 0) << outcome.err;
   EXPECT_NE(outcome.out.find("std::"), std::string::npos) << "nm listed the undefined symbols";

@@ -39,7 +39,8 @@ CORE_TESTS = ["test_arith_accuracy", "test_arith_bus", "test_constants", "test_b
 CONTROL_TESTS = ["test_control_protocol", "test_control_timing", "test_block_dff", "test_block_gates",
                  "test_power_on_reset"]
 TLM_TESTS = ["test_tlm_registers", "test_tlm_legal_use", "test_misuse_tlm", "test_tlm_timing", "test_tlm_idle",
-             "test_tlm_integration", "test_tlm_operand_burst", "test_tlm_strict_delay", "test_tlm_rtl"]
+             "test_tlm_integration", "test_tlm_operand_burst", "test_tlm_strict_delay", "test_tlm_rtl",
+             "test_tlm_diagnostics"]
 FILES = [("arith.cpp", CORE_TESTS), ("core.cpp", CORE_TESTS),
          ("control/control_unit16.cpp", CONTROL_TESTS), ("control/d_flip_flop.cpp", CONTROL_TESTS),
          ("control/gates.cpp", CONTROL_TESTS), ("tlm/target.cpp", TLM_TESTS)]
@@ -201,7 +202,11 @@ def build_targets(build, targets, log):
 
 def run_in_copy(args):
     """The farm's way: the commit copied into DIR/src (git archive), configured and built in
-    DIR/build (Release, ccache when present), then this script of the copy mutates the copy."""
+    DIR/build (Release, ccache when present), then this script of the copy mutates the copy.
+    The copy builds specular and specular_core as shared libraries whose change relinks no
+    executable (CMAKE_LINK_DEPENDS_NO_SHARED): a mutant then costs one object and one
+    library link, not the relinking of every test executable of its file (up to 10, some
+    with the verilated twin)."""
     copy = os.path.abspath(args.copy)
     src, build = os.path.join(copy, "src"), os.path.join(copy, "build")
     os.makedirs(src, exist_ok=True)
@@ -209,7 +214,8 @@ def run_in_copy(args):
     subprocess.run(["tar", "-x", "-C", src], input=archive, check=True)
     launcher = ["-DCMAKE_CXX_COMPILER_LAUNCHER=ccache", "-DCMAKE_C_COMPILER_LAUNCHER=ccache"] \
         if subprocess.run(["sh", "-c", "command -v ccache"], capture_output=True).returncode == 0 else []
-    subprocess.run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release"] + launcher,
+    subprocess.run(["cmake", "-S", src, "-B", build, "-DCMAKE_BUILD_TYPE=Release", "-DBUILD_SHARED_LIBS=ON",
+                    "-DCMAKE_LINK_DEPENDS_NO_SHARED=ON"] + launcher,
                    check=True, stdout=subprocess.DEVNULL)
     argv = [a for a in sys.argv[1:]]
     k = argv.index("--copy")

@@ -8,7 +8,7 @@
 //   - starts back to back every 2 T while n, R, G, B are unchanged, 3 T when they change;
 //   - register 1 and register 9's pass 1 are checked at the rising edge of select 36,
 //     register 9's pass 2 and pins 24-26 at the rising edge of 35, which must come
-//     2.5 T after start (35 falls at 2 T);
+//     2.5 T after start (35 falls at 2 T), and strobe 37 must rise at T and 2 T (RTL);
 //   - every RESET_EVERY-th operation is preceded by one aborted by reset (29) at a
 //     quarter-period phase cycling through the whole operation; 35 must be high and
 //     the control unit idle (Q41 = Q42 = select 36 = write 37 = 0, NAND 45 = 1) during
@@ -208,6 +208,20 @@ module specular_device_tb;
     done_seen = done_seen + 1;
   end
 
+`ifndef GATE_LEVEL
+  // Strobe 37 rises at T (pass 1) and at 2T (pass 2) after the start edge, register 9's
+  // two writes (spec section 3's timing table); checked at RTL, where no glitch can add
+  // an edge (gate level: the pulse monitors below).
+  integer rise37_seen = 0;
+  always @(posedge obs_write37) if (monitoring) begin
+    if (rise37_seen / 2 >= started) $fatal(1, "specular_device_tb: 37 rose with no operation at %0t", $realtime);
+    if (off_time($realtime - start_time[rise37_seen / 2], 1.0 + rise37_seen % 2))
+      $fatal(1, "specular_device_tb: 37 rose %f periods after start %0d (want %0d)",
+             ($realtime - start_time[rise37_seen / 2]) / T, rise37_seen / 2, 1 + rise37_seen % 2);
+    rise37_seen = rise37_seen + 1;
+  end
+`endif
+
 `ifdef GATE_LEVEL
   // Fig. 2's strobes with real delays (docs/silicon.md, hazards): pulses of strobe 37
   // (high) and pin 35 (low) and the narrowest of each, against the DFFPOSX1's minimum
@@ -356,6 +370,10 @@ module specular_device_tb;
     if (done_seen != count || pass1_seen != count || fall_seen != count)
       $fatal(1, "specular_device_tb: %0d operations, %0d pass-1 writes, %0d results",
              count, pass1_seen, done_seen);
+`ifndef GATE_LEVEL
+    if (rise37_seen != 2 * count)
+      $fatal(1, "specular_device_tb: %0d operations, %0d rising edges of 37 (want 2 each)", count, rise37_seen);
+`endif
     $display("specular_device_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s; widths COS U1.%0d, register 9 S%0d.%0d, ROM 5 word %0d bits",
              count, back_to_back, resets, checks, VECTORS, COS_FRAC, REG9_INT, REG9_FRAC,
              ROM5_WORD_BITS);

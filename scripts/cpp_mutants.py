@@ -13,6 +13,13 @@ is not counted. The file is restored after every mutant (and on an interrupt).
   cpp_mutants.py list                              every mutant: id, file:line, change
   cpp_mutants.py run [--sample K --seed S] [--ids A,B] [--shard I/N] [--partial F] [--build DIR]
   cpp_mutants.py merge PARTIAL...                  shards -> per-file scores (exit 1 below --goal)
+  cpp_mutants.py report PARTIAL...                 the scores of any partials together (strata, samples)
+  cpp_mutants.py check-triage                      CI: every triaged mutant still exists, with a reason
+
+A survivor argued equivalent (it changes no output the device's contract lets anyone see)
+is listed in scripts/cpp_mutants_triage.tsv -- file, change, the mutated line, the reason --
+and counted apart: the score is killed / (killed + survived), equivalents left out, as
+for the RTL mutants that Yosys proves equivalent.
 
 The ids are stable for a given source tree (files in a fixed order, lines top-down,
 changes left to right), so a seeded sample and a shard (id mod N = I) are the same on
@@ -48,6 +55,39 @@ SWAPS = [(" <= ", " < "), (" < ", " <= "), (" >= ", " > "), (" > ", " >= "), (" 
          (" != ", " == "), (" + ", " - "), (" - ", " + "), (" * ", " / "), (" / ", " * "),
          (" += ", " -= "), (" -= ", " += "), ("++", "--"), ("--", "++"), (" && ", " || "),
          (" || ", " && ")]
+
+
+TRIAGE = os.path.join(ROOT, "scripts", "cpp_mutants_triage.tsv")
+
+
+def triage():
+    """{(file, change, mutated line stripped): reason} of the survivors argued equivalent."""
+    entries = {}
+    with open(TRIAGE) as f:
+        for line in f:
+            if not line.strip() or line.startswith("#"):
+                continue
+            fields = line.rstrip("\n").split("\t")
+            fields += [""] * (4 - len(fields))
+            entries[(fields[0], fields[1], fields[2])] = fields[3]
+    return entries
+
+
+def check_triage():
+    """Every triaged mutant is still a mutant of the tree, and has a reason."""
+    current = {(m["file"], m["change"], m["new"].strip()) for m in all_mutants()}
+    status = 0
+    entries = triage()
+    for key, reason in entries.items():
+        if key not in current:
+            print("cpp_mutants.py: triaged mutant no longer in the tree: %s %s: %s" % key, file=sys.stderr)
+            status = 1
+        if not reason.strip():
+            print("cpp_mutants.py: triaged mutant without a reason: %s %s: %s" % key, file=sys.stderr)
+            status = 1
+    if status == 0:
+        print("cpp_mutants.py: every one of %d triaged mutants is in the tree, with a reason" % len(entries))
+    return status
 
 
 def die(message, status=2):
@@ -325,23 +365,32 @@ def wilson(k, n, z=1.96):
 
 def report(partials, goal):
     results = [r for p in partials for r in p["results"]]
-    print("file | mutants run | killed | survived | uncompilable | score (killed / compiled)")
+    equivalent = triage()
+    for r in results:  # a survivor argued equivalent is counted apart
+        if r["verdict"] == "survived" and (r["file"], r["change"], r["mutated"]) in equivalent:
+            r["verdict"] = "equivalent"
+    print("file | mutants run | killed | survived | equivalent (argued) | uncompilable | score (killed / (killed + survived))")
     total_k = total_n = 0
     for rel, _ in FILES + [("all", None)]:
         rs = results if rel == "all" else [r for r in results if r["file"] == rel]
         k = sum(r["verdict"] == "killed" for r in rs)
         s = sum(r["verdict"] == "survived" for r in rs)
+        e = sum(r["verdict"] == "equivalent" for r in rs)
         u = sum(r["verdict"] == "uncompilable" for r in rs)
         if rel == "all":
             total_k, total_n = k, k + s
         score = "%.1f %%" % (100.0 * k / (k + s)) if k + s else "-"
-        print("%s | %d | %d | %d | %d | %s" % (rel, len(rs), k, s, u, score))
+        print("%s | %d | %d | %d | %d | %d | %s" % (rel, len(rs), k, s, e, u, score))
     low, high = wilson(total_k, total_n)
     print("score %d/%d = %.1f %%, 95 %% Wilson interval [%.1f %%, %.1f %%]"
           % (total_k, total_n, 100.0 * total_k / total_n if total_n else 0, 100 * low, 100 * high))
     for r in results:
         if r["verdict"] == "survived":
             print("  survived %d %s:%d %s: %s" % (r["id"], r["file"], r["line"], r["change"], r["mutated"]))
+    for r in results:
+        if r["verdict"] == "equivalent":
+            print("  equivalent %d %s:%d %s: %s -- %s" % (r["id"], r["file"], r["line"], r["change"], r["mutated"],
+                                                         equivalent[(r["file"], r["change"], r["mutated"])]))
     return 0 if total_n and total_k / total_n >= goal else 1
 
 
@@ -375,6 +424,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
     sub.add_parser("list")
+    sub.add_parser("check-triage")
     r = sub.add_parser("run")
     r.add_argument("--sample", type=int, default=0, help="a seeded random sample of K mutants (0: all)")
     r.add_argument("--seed", type=int, default=37)
@@ -392,11 +442,18 @@ def main():
     m = sub.add_parser("merge")
     m.add_argument("partials", nargs="+")
     m.add_argument("--goal", type=float, default=0.90)
+    rp = sub.add_parser("report")
+    rp.add_argument("partials", nargs="+")
+    rp.add_argument("--goal", type=float, default=0.90)
     args = parser.parse_args()
     if args.command == "list":
         for m in all_mutants():
             print("%d\t%s:%d\t%s\t%s" % (m["id"], m["file"], m["line"], m["change"], m["new"].strip()))
         return 0
+    if args.command == "check-triage":
+        return check_triage()
+    if args.command == "report":  # any partials (strata, samples): no shard bookkeeping
+        return report([json.load(open(f)) for f in args.partials], args.goal)
     if args.command == "run":
         if args.sample < 0:
             die("--sample: %d is outside the allowed range [0, number of mutants]" % args.sample)

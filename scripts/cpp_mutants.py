@@ -17,7 +17,8 @@ is not counted. The file is restored after every mutant (and on an interrupt).
   cpp_mutants.py check-triage                      CI: every triaged mutant still exists, with a reason
 
 A survivor argued equivalent (it changes no output the device's contract lets anyone see)
-is listed in scripts/cpp_mutants_triage.tsv -- file, change, the mutated line, the reason --
+is listed in scripts/cpp_mutants_triage.tsv -- file, change, the line, the mutated line, the
+reason --
 and counted apart: the score is killed / (killed + survived), equivalents left out, as
 for the RTL mutants that Yosys proves equivalent.
 
@@ -61,29 +62,35 @@ TRIAGE = os.path.join(ROOT, "scripts", "cpp_mutants_triage.tsv")
 
 
 def triage():
-    """{(file, change, mutated line stripped): reason} of the survivors argued equivalent."""
+    """{(file, change, line stripped, mutated line stripped): reason} of the survivors argued
+    equivalent."""
     entries = {}
     with open(TRIAGE) as f:
         for line in f:
             if not line.strip() or line.startswith("#"):
                 continue
             fields = line.rstrip("\n").split("\t")
-            fields += [""] * (4 - len(fields))
-            entries[(fields[0], fields[1], fields[2])] = fields[3]
+            fields += [""] * (5 - len(fields))
+            entries[tuple(fields[:4])] = fields[4]
     return entries
+
+
+def key_of(m):
+    """A mutant's identity across trees: file, change, the line before and after."""
+    return (m["file"], m["change"], m["original"].strip(), m["new"].strip())
 
 
 def check_triage():
     """Every triaged mutant is still a mutant of the tree, and has a reason."""
-    current = {(m["file"], m["change"], m["new"].strip()) for m in all_mutants()}
+    current = {key_of(m) for m in all_mutants()}
     status = 0
     entries = triage()
     for key, reason in entries.items():
         if key not in current:
-            print("cpp_mutants.py: triaged mutant no longer in the tree: %s %s: %s" % key, file=sys.stderr)
+            print("cpp_mutants.py: triaged mutant no longer in the tree: %s %s: %s -> %s" % key, file=sys.stderr)
             status = 1
         if not reason.strip():
-            print("cpp_mutants.py: triaged mutant without a reason: %s %s: %s" % key, file=sys.stderr)
+            print("cpp_mutants.py: triaged mutant without a reason: %s %s: %s -> %s" % key, file=sys.stderr)
             status = 1
     if status == 0:
         print("cpp_mutants.py: every one of %d triaged mutants is in the tree, with a reason" % len(entries))
@@ -181,7 +188,8 @@ def all_mutants():
         with open(os.path.join(SRC, rel)) as f:
             lines = f.readlines()
         for number, description, new in mutants_of(rel, lines):
-            out.append({"id": len(out), "file": rel, "line": number, "change": description, "new": new})
+            out.append({"id": len(out), "file": rel, "line": number, "change": description, "new": new,
+                        "original": lines[number - 1]})
     return out
 
 
@@ -315,6 +323,7 @@ def run(args):
             with open(path, "w") as f:
                 f.write("".join(lines))
             entry = {k: m[k] for k in ("id", "file", "line", "change")}
+            entry["original"] = m["original"].strip()
             entry["mutated"] = m["new"].strip()
             if not build_targets(build, tests_of(m["file"]), log):
                 entry["verdict"] = "uncompilable"
@@ -367,7 +376,11 @@ def report(partials, goal):
     results = [r for p in partials for r in p["results"]]
     equivalent = triage()
     for r in results:  # a survivor argued equivalent is counted apart
-        if r["verdict"] == "survived" and (r["file"], r["change"], r["mutated"]) in equivalent:
+        if "original" not in r:  # a partial of before the field: the line of this tree
+            with open(os.path.join(SRC, r["file"])) as f:
+                r["original"] = f.readlines()[r["line"] - 1].strip()
+        r["key"] = (r["file"], r["change"], r["original"], r["mutated"])
+        if r["verdict"] == "survived" and r["key"] in equivalent:
             r["verdict"] = "equivalent"
     print("file | mutants run | killed | survived | equivalent (argued) | uncompilable | score (killed / (killed + survived))")
     total_k = total_n = 0
@@ -390,7 +403,7 @@ def report(partials, goal):
     for r in results:
         if r["verdict"] == "equivalent":
             print("  equivalent %d %s:%d %s: %s -- %s" % (r["id"], r["file"], r["line"], r["change"], r["mutated"],
-                                                         equivalent[(r["file"], r["change"], r["mutated"])]))
+                                                         equivalent[r["key"]]))
     return 0 if total_n and total_k / total_n >= goal else 1
 
 

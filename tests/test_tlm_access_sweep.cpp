@@ -18,7 +18,7 @@
 #include <cstring>
 #include <map>
 #include <memory>
-#include <optional>
+#include <ostream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -452,10 +452,13 @@ struct Param {
   Via via;
 };
 
-std::string param_name(const ::testing::TestParamInfo<Param>& info) {
-  const std::string row = info.param.row == unmapped_row ? "UNMAPPED" : register_map[info.param.row].name;
-  return row + "_" + via_names[static_cast<int>(info.param.via)];
+std::string name_of(const Param& param) {
+  const std::string row = param.row == unmapped_row ? "UNMAPPED" : register_map[param.row].name;
+  return row + "_" + via_names[static_cast<int>(param.via)];
 }
+std::string param_name(const ::testing::TestParamInfo<Param>& info) { return name_of(info.param); }
+// ctest's test names carry the parameter as gtest prints it: its name, not its bytes.
+void PrintTo(const Param& param, std::ostream* os) { *os << name_of(param); }
 
 std::vector<Param> every_row_and_transport() {
   std::vector<Param> params;

@@ -8,6 +8,7 @@
 // output equals Core's. The TLM bench's Endpoint records the order (tlm_bench.h).
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -30,6 +31,11 @@ std::string param_name(const ::testing::TestParamInfo<Param>& info) {
   return std::string(to_string(kind)) + (masked ? "_masked_" : "_enabled_") +
          (order == Order::acknowledged_before_next_start ? "acknowledged_before_next_start"
                                                          : "acknowledged_after_next_start");
+}
+
+// ctest's test names carry the parameter as gtest prints it: the orders by name.
+void PrintTo(Order order, std::ostream* os) {
+  *os << (order == Order::acknowledged_before_next_start ? "before" : "after");
 }
 
 class InterruptOrders : public ::testing::TestWithParam<Param> {};

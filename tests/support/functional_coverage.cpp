@@ -115,7 +115,13 @@ std::vector<Bin> declare() {
   for (const char* mask : {"enabled", "masked"})
     for (const char* order : {"acknowledged_before_next_start", "acknowledged_after_next_start"})
       add(std::string("interrupt/") + mask + "/" + order,
-          std::string("done interrupt ") + mask + ", STATUS.done " + order);
+          std::string(mask == std::string("enabled")
+                          ? "done_irq bound to the platform's interrupt line"
+                          : "done interrupt masked: done_irq left unbound (the map has no mask "
+                            "register; the SoC's controller does not take the line), STATUS.done polled") +
+              (std::string(order) == "acknowledged_before_next_start"
+                   ? "; STATUS.done acknowledged (1 written) before the next START"
+                   : "; the next START arrives while STATUS.done is still set (acknowledged after it)"));
   add("reset/during_operation", "pin 29 (reset) asserted while an operation is in flight");
   return bins;
 }

@@ -26,6 +26,7 @@
 #include "specular/core.h"
 #include "specular/tlm/register_map.h"
 #include "support/functional_coverage.h"
+#include "support/functional_coverage_child.h"
 #include "support/legal_use_bench.h"
 
 namespace {
@@ -494,6 +495,22 @@ TEST_P(AccessSweep, EveryAccessIsAnsweredAsTheMapSays) {
   EXPECT_GT(accesses, 0);
   EXPECT_TRUE(bench.checker.violations.empty()) << bench.checker.violations.front();
   EXPECT_TRUE(bench.checker.idle());
+}
+
+// What a sweep test records (run as a child with the recording on): each bin its plan
+// can hit, once — its snapshots and clean-ups pass unrecorded — and no other access bin.
+TEST(AccessSweepRecording, ATestHitsExactlyItsPlannedBinsOnce) {
+  for (const Param param : {Param{index_of(Reg::cos), Via::nb}, Param{index_of(Reg::operands), Via::dbg}}) {
+    std::map<std::string, long> want;
+    for (bool write : {false, true})
+      for (unsigned width = 0; width < 5; ++width)
+        for (bool legal : {true, false})
+          if (plan(param.row, write, width, legal, param.via).impossible.empty())
+            want[bin_name(param.row, write, width, legal, param.via)] = 1;
+    const auto hits = testing_support::hits_of_child(
+        "EveryRowAndTransport/AccessSweep.EveryAccessIsAnsweredAsTheMapSays/" + name_of(param));
+    EXPECT_EQ(testing_support::hits_under(hits, "access/"), want) << name_of(param);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryRowAndTransport, AccessSweep, ::testing::ValuesIn(every_row_and_transport()),

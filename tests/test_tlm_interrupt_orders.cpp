@@ -8,6 +8,7 @@
 // output equals Core's. The TLM bench's Endpoint records the order (tlm_bench.h).
 #include <gtest/gtest.h>
 
+#include <map>
 #include <ostream>
 #include <string>
 #include <tuple>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "specular/core.h"
+#include "support/functional_coverage_child.h"
 #include "support/tlm_bench.h"
 
 namespace {
@@ -105,6 +107,25 @@ TEST_P(InterruptOrders, DoneIrqFollowsStatusDoneInEveryOrder) {
         }
       },
       config, sc_time(10, SC_NS), {}, /*bind_irq=*/!masked);
+}
+
+// The Endpoint records each scenario's order (run as a child with the recording on): the
+// "before" scenario acknowledges both operations with done raised; the "after" one starts
+// the second while the first's done is raised, then acknowledges the second.
+TEST(InterruptOrderRecording, EachScenarioHitsItsOwnBins) {
+  using testing_support::hits_of_child;
+  using testing_support::hits_under;
+  for (const bool masked : {false, true})
+    for (const bool before : {true, false}) {
+      const std::string mask = masked ? "masked" : "enabled";
+      const std::string name = "lt_" + mask + (before ? "_acknowledged_before_next_start" : "_acknowledged_after_next_start");
+      const auto hits = hits_of_child("EveryOrder/InterruptOrders.DoneIrqFollowsStatusDoneInEveryOrder/" + name);
+      const std::string bin = "interrupt/" + mask + "/acknowledged_";
+      const std::map<std::string, long> want =
+          before ? std::map<std::string, long>{{bin + "before_next_start", 2}}
+                 : std::map<std::string, long>{{bin + "after_next_start", 1}, {bin + "before_next_start", 1}};
+      EXPECT_EQ(hits_under(hits, "interrupt/"), want) << name;
+    }
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -322,9 +322,10 @@ class Sweep {
     // the data: what a legal write stores (or an illegal one offers), else a pattern
     std::vector<unsigned char> data(p.length, 0xA5);
     if (write) {
-      std::vector<unsigned char> words(p.length + 4);
+      const unsigned count = p.length / 4 + 2;  // the words the access touches, and one more
+      std::vector<unsigned char> words(4 * count);
       const std::uint64_t first = p.address & ~std::uint64_t{3};
-      for (unsigned i = 0; i * 4 < p.length + 4; ++i) {
+      for (unsigned i = 0; i < count; ++i) {
         const std::uint64_t a = first + 4 * i;
         std::uint32_t v = 0;
         if (decode(a) != nullptr) v = p.bad_values ? bad_value(a) : good_value(static_cast<std::uint32_t>(a), width);
@@ -347,8 +348,9 @@ class Sweep {
     if (legal && !write) {  // the bytes the map's reset values give (no write came before)
       const Words reset = reset_words();
       const std::uint64_t first = p.address & ~std::uint64_t{3};
-      std::vector<unsigned char> bytes(p.length + 4);
-      for (unsigned i = 0; i * 4 < p.length + 4; ++i) {
+      const unsigned count = p.length / 4 + 2;
+      std::vector<unsigned char> bytes(4 * count);
+      for (unsigned i = 0; i < count; ++i) {
         const std::uint32_t v = reset.count(first + 4 * i) ? reset.at(first + 4 * i) : 0;
         std::memcpy(bytes.data() + 4 * i, &v, 4);
       }

@@ -43,7 +43,10 @@ void PrintTo(Order order, std::ostream* os) {
 class InterruptOrders : public ::testing::TestWithParam<Param> {};
 
 TEST_P(InterruptOrders, DoneIrqFollowsStatusDoneInEveryOrder) {
-  const auto [kind, masked, order] = GetParam();
+  // (not a structured binding: C++17 lambdas may not capture one)
+  const Kind kind = std::get<0>(GetParam());
+  const bool masked = std::get<1>(GetParam());
+  const Order order = std::get<2>(GetParam());
   const bool before = order == Order::acknowledged_before_next_start;
   const Config config;
   const Core core(config);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "specular/core.h"
+#include "support/functional_coverage_child.h"
 #include "support/protocol_bench.h"
 
 namespace specular {
@@ -122,6 +123,15 @@ TEST(Reset, MidOperationReturnsToIdleAndTheNextOperationIsCorrect) {
     for (const sc_time& t0 : aborted_starts) EXPECT_NE(d.time, t0 + 2.5 * bench.period());
   expect_matches_reference(config, next, after);
   EXPECT_DOUBLE_EQ(cycles_after, 2.5) << "the next operation keeps the spec's timing";
+}
+
+// Functional coverage (issue 37): the protocol bench records a reset that meets an
+// operation in flight (twice in the test above: in pass 1 and in pass 2), and not one
+// held while the device is idle (run as children with the recording on).
+TEST(ResetRecording, OnlyAResetDuringAnOperationHitsItsBin) {
+  using testing_support::hits_of_child;
+  EXPECT_EQ(hits_of_child("Reset.MidOperationReturnsToIdleAndTheNextOperationIsCorrect")["reset/during_operation"], 2);
+  EXPECT_EQ(hits_of_child("Reset.ClearsOnlyTheControlUnit").count("reset/during_operation"), 0u);
 }
 
 }  // namespace

@@ -23,6 +23,42 @@ const char* const widths[] = {"1", "2", "4", "8", "burst"};
 
 bool is_read_only(const RegisterInfo& row) { return row.access == Access::read_only; }
 
+/// docs/tlm.md's debug transport: word by word, it reads every mapped word and writes
+/// the RW storage only (COS, N, R, G, B, OPERANDS words 0-4, BATCH_COS).
+bool debug_serves(std::uint64_t address, bool write) {
+  const RegisterInfo* row = decode(address);
+  if (row == nullptr) return false;
+  if (!write) return true;
+  if (row->reg == Reg::operands) return (address - row->offset) / 4 < 5;  // CONTROL: not storage
+  return row->access == Access::read_write;
+}
+
+/// Why no legal access of `bytes` bytes at `row` through `transport` exists (docs/tlm.md's
+/// rules), or "" when one does.
+std::string no_legal_access(const RegisterInfo& row, bool write, const std::string& width,
+                            const std::string& transport) {
+  const bool window = row.words > 1;
+  const unsigned bytes = width == "burst" ? 12 : static_cast<unsigned>(std::stoul(width));
+  if (transport == "dbg") {
+    if (bytes < 4) return "the debug transport serves whole words only";
+    for (unsigned i = 0; i < bytes; i += 4)
+      if (!debug_serves(row.offset + i, write))
+        return write ? "the debug transport writes the RW storage only (COS, N, R, G, B, OPERANDS 0-4, BATCH_COS)"
+                     : "the debug transport stops at the hole after the register";
+    return "";
+  }
+  if (write && is_read_only(row)) return "read-only: every write is refused";
+  if (!window && width == "burst") return "a single register takes at most 8 bytes on the bus";
+  if (window && write && bytes < 4) return "a window refuses sub-word writes on the bus";
+  if (!window && bytes == 8) {
+    const RegisterInfo* second = decode(row.offset + 4);
+    if (row.offset % 8 != 0 || second == nullptr || (write && is_read_only(*second)))
+      return write ? "8 bytes on the bus need a doubleword offset and a writable register after it"
+                   : "8 bytes on the bus need a doubleword offset and a register after it";
+  }
+  return "";
+}
+
 std::vector<Bin> declare() {
   std::vector<Bin> bins;
   auto add = [&](std::string name, std::string what, std::string ignore = "") {
@@ -62,17 +98,9 @@ std::vector<Bin> declare() {
       for (const char* width : widths)
         for (const char* legality : {"legal", "illegal"})
           for (const char* transport : transports) {
-            std::string ignore;
             const bool legal = std::string(legality) == "legal";
             const bool write = std::string(rw) == "write";
-            const bool window = row.words > 1;
-            const std::string w = width;
-            const bool bus = std::string(transport) != "dbg";  // the debug transport is laxer
-            if (legal && write && is_read_only(row)) ignore = "read-only: every write is refused";
-            else if (bus && legal && !window && w == "burst")
-              ignore = "a single register takes at most 8 bytes on the bus";
-            else if (bus && legal && window && (w == "1" || w == "2") && write)
-              ignore = "a window refuses sub-word writes on the bus";
+            const std::string ignore = legal ? no_legal_access(row, write, width, transport) : "";
             add(std::string("access/") + row.name + "/" + rw + "/" + width + "/" + legality + "/" +
                     transport,
                 std::string(rw) + " of " + width + " byte(s) at " + row.name + ", " + legality +
@@ -87,7 +115,13 @@ std::vector<Bin> declare() {
   for (const char* mask : {"enabled", "masked"})
     for (const char* order : {"acknowledged_before_next_start", "acknowledged_after_next_start"})
       add(std::string("interrupt/") + mask + "/" + order,
-          std::string("done interrupt ") + mask + ", STATUS.done " + order);
+          std::string(mask == std::string("enabled")
+                          ? "done_irq bound to the platform's interrupt line"
+                          : "done interrupt masked: done_irq left unbound (the map has no mask "
+                            "register; the SoC's controller does not take the line), STATUS.done polled") +
+              (std::string(order) == "acknowledged_before_next_start"
+                   ? "; STATUS.done acknowledged (1 written) before the next START"
+                   : "; the next START arrives while STATUS.done is still set (acknowledged after it)"));
   add("reset/during_operation", "pin 29 (reset) asserted while an operation is in flight");
   return bins;
 }

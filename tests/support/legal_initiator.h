@@ -47,15 +47,17 @@ class LegalInitiator : public sc_core::sc_module {
   tlm::tlm_response_status transport(Path path, tlm::tlm_command command, std::uint64_t address,
                                      void* data, unsigned length,
                                      const sc_core::sc_time& request_delay = sc_core::SC_ZERO_TIME,
-                                     unsigned streaming_width = streaming_width_of_length) {
+                                     unsigned streaming_width = streaming_width_of_length,
+                                     unsigned char* byte_enables = nullptr,
+                                     unsigned byte_enable_length = 0) {
     tlm::tlm_generic_payload tx;
     tx.set_command(command);
     tx.set_address(address);
     tx.set_data_ptr(static_cast<unsigned char*>(data));
     tx.set_data_length(length);
     tx.set_streaming_width(streaming_width == streaming_width_of_length ? length : streaming_width);
-    tx.set_byte_enable_ptr(nullptr);
-    tx.set_byte_enable_length(0);
+    tx.set_byte_enable_ptr(byte_enables);
+    tx.set_byte_enable_length(byte_enable_length);
     tx.set_dmi_allowed(false);
     tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     if (path == Path::b) {

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "functional_coverage.h"
 #include "specular/pin_harness.h"
 #include "specular/twin/rtl_device.h"
 #include "specular/reference.h"
@@ -50,6 +51,9 @@ class ProtocolBenchT : public sc_core::sc_module {
     SC_THREAD(run);
     SC_METHOD(on_done);
     sensitive << harness.pin35_done.posedge_event();
+    dont_initialize();
+    SC_METHOD(on_control_pins);
+    sensitive << harness.pin27_start.posedge_event() << harness.pin29_reset_n.negedge_event();
     dont_initialize();
   }
 
@@ -119,7 +123,19 @@ class ProtocolBenchT : public sc_core::sc_module {
     scenario_(*this);
     sc_core::sc_stop();
   }
+  // Functional coverage (issue 37): pin 29 falling while an operation is in flight (a
+  // start rose since the last rising edge of 35) hits reset/during_operation.
+  void on_control_pins() {
+    if (harness.pin27_start.posedge() && harness.pin29_reset_n.read()) in_flight_ = true;
+    if (harness.pin29_reset_n.negedge()) {
+      if (in_flight_) testing_support::coverage::record_reset_during_operation();
+      in_flight_ = false;
+    }
+  }
+  bool in_flight_ = false;
+
   void on_done() {
+    in_flight_ = false;
     Result r;
     r.reg9_pass2 = harness.dut.reg9_q.read();
     r.rom38_k = harness.dut.rom38_k.read();

@@ -39,8 +39,12 @@ inline const char* to_string(Kind kind) {
 /// One target with the initiator side that talks to it.
 class Endpoint : public sc_core::sc_module {
  public:
-  Endpoint(sc_core::sc_module_name name, Kind kind, const Config& config, const sc_time& period)
-      : sc_module(name), kind(kind), driver(socket, 0, keeper) {
+  /// bind_irq false: done_irq is left unbound, as on a platform whose interrupt controller
+  /// does not take (masks) the line and whose software polls STATUS.done; the target then
+  /// drives a signal of its own, and irq_edges come from on_done_irq().
+  Endpoint(sc_core::sc_module_name name, Kind kind, const Config& config, const sc_time& period,
+           bool bind_irq = true)
+      : sc_module(name), kind(kind), driver(socket, 0, keeper), irq_bound_(bind_irq) {
     SPECULAR_HAS_PROCESS(Endpoint);
     testing_support::coverage::record_policy(config);  // functional coverage (issue 37)
     if (kind == Kind::lt)
@@ -52,10 +56,14 @@ class Endpoint : public sc_core::sc_module {
     else
       target = std::make_unique<SpecularRtlSyncTarget>("target", config, period);
     socket.bind(target->socket);
-    target->done_irq(irq);
-    SC_METHOD(on_irq);
-    sensitive << irq;
-    dont_initialize();
+    if (bind_irq) {
+      target->done_irq(irq);
+      SC_METHOD(on_irq);
+      sensitive << irq;
+      dont_initialize();
+    } else {
+      target->on_done_irq([this](bool level) { irq_edges.emplace_back(sc_core::sc_time_stamp(), level); });
+    }
   }
 
   Kind kind;
@@ -84,8 +92,9 @@ class Endpoint : public sc_core::sc_module {
     tx.set_byte_enable_length(enables_length);
     tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     sc_time delay = sc_core::SC_ZERO_TIME;
+    const bool done_before = target->done_irq_level();  // STATUS.done as the access meets it
     socket->b_transport(tx, delay);
-    cover(tx, testing_support::coverage::Transport::b);
+    cover(tx, testing_support::coverage::Transport::b, done_before);
     if (annotated != nullptr) *annotated = delay;
     wait(delay);
     return tx.get_response_status();
@@ -120,27 +129,39 @@ class Endpoint : public sc_core::sc_module {
 
  private:
   void on_irq() { irq_edges.emplace_back(sc_core::sc_time_stamp(), irq.read()); }
-  // Functional coverage (issue 37): the access, and the done interrupt's order: raised,
-  // then STATUS.done cleared (acknowledged) before the next START or a START while it
-  // is still raised. The bench binds done_irq, so the interrupt is always enabled here.
-  void cover(const tlm::tlm_generic_payload& tx, testing_support::coverage::Transport transport) {
+  // Functional coverage (issue 37): the access, and the done interrupt's order, from the
+  // level done_irq had when the access arrived (high: an operation's done not yet
+  // acknowledged): a write of 1 to STATUS.done then acknowledges it before the next
+  // START; a START (CONTROL, OPERANDS word 5, or a BATCH_COS write) meets it still
+  // raised: acknowledged after. Enabled: done_irq bound to the bench's line; masked:
+  // left unbound (see the constructor).
+  void cover(const tlm::tlm_generic_payload& tx, testing_support::coverage::Transport transport,
+             bool done_before) {
     namespace cov = testing_support::coverage;
     if (!cov::enabled() || tx.is_read() == tx.is_write()) return;
     const bool legal = tx.get_response_status() == tlm::TLM_OK_RESPONSE;
     cov::record_access(tx.get_address(), tx.is_write(), tx.get_data_length(), legal, transport,
                        tx.get_data_ptr());
-    if (!legal || !tx.is_write() || tx.get_data_length() != 4) return;
-    std::uint32_t value = 0;
-    std::memcpy(&value, tx.get_data_ptr(), 4);
-    if (tx.get_address() == offset_of(Reg::status) && (value & status_bits::done) && irq_seen_) {
-      cov::record_interrupt(true, true);
-      irq_seen_ = false;
-    } else if (tx.get_address() == offset_of(Reg::control) && (value & control_bits::start)) {
-      if (irq_seen_ && irq.read()) cov::record_interrupt(true, false);
-      irq_seen_ = irq.read();
-    }
+    if (!legal || !tx.is_write() || !done_before) return;
+    const std::uint64_t first = tx.get_address();
+    const std::uint64_t end = first + tx.get_data_length();
+    // the 32-bit word at `offset` if the write covers it whole, else 0
+    auto word_at = [&](std::uint64_t offset) -> std::uint32_t {
+      if (offset < first || offset + 4 > end) return 0;
+      std::uint32_t value = 0;
+      std::memcpy(&value, tx.get_data_ptr() + (offset - first), 4);
+      return value;
+    };
+    const RegisterInfo& batch = info(Reg::batch_cos);
+    const bool starts = (word_at(offset_of(Reg::control)) & control_bits::start) ||
+                        (word_at(offset_of(Reg::operands) + 20) & control_bits::start) ||
+                        (first >= batch.offset && first < batch.end());
+    if (starts)
+      cov::record_interrupt(irq_bound_, false);
+    else if (word_at(offset_of(Reg::status)) & status_bits::done)
+      cov::record_interrupt(irq_bound_, true);
   }
-  bool irq_seen_ = false;
+  bool irq_bound_;
 };
 
 /// The top: endpoints and up to two scenario threads; stops the kernel when both end.
@@ -149,11 +170,11 @@ class TlmBench : public sc_core::sc_module {
   using Scenario = std::function<void(TlmBench&)>;
 
   TlmBench(sc_core::sc_module_name name, const std::vector<Kind>& kinds, const Config& config,
-           const sc_time& period, Scenario main, Scenario second)
+           const sc_time& period, Scenario main, Scenario second, bool bind_irq = true)
       : sc_module(name), period(period), main_(std::move(main)), second_(std::move(second)) {
     SPECULAR_HAS_PROCESS(TlmBench);
     for (const Kind kind : kinds)
-      endpoints.push_back(std::make_unique<Endpoint>(to_string(kind), kind, config, period));
+      endpoints.push_back(std::make_unique<Endpoint>(to_string(kind), kind, config, period, bind_irq));
     SC_THREAD(run_main);
     SC_THREAD(run_second);
   }
@@ -191,10 +212,10 @@ class TlmBench : public sc_core::sc_module {
 /// Elaborates the bench (once per process, i.e. once per TEST) and simulates it.
 inline void run(const std::vector<Kind>& kinds, TlmBench::Scenario main,
                 const Config& config = Config{}, const sc_time& period = sc_time(10, SC_NS),
-                TlmBench::Scenario second = {}) {
+                TlmBench::Scenario second = {}, bool bind_irq = true) {
   static std::unique_ptr<TlmBench> bench;  // alive until exit, as SystemC wants
   bench = std::make_unique<TlmBench>("bench", kinds, config, period, std::move(main),
-                                     std::move(second));
+                                     std::move(second), bind_irq);
   sc_core::sc_start();
 }
 

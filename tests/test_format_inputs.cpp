@@ -147,6 +147,12 @@ TEST(FormatInputs, CoreRunRefusesCodesOffTheirBuses) {
                                                {"register 1 (cos)", "131072", "U1.16", "0 to 131071"}));
   // The largest code of every bus is still on it.
   EXPECT_NO_THROW(core.run(Operands{(std::int64_t{1} << 17) - 1, 1023, {255, 255, 255}}));
+  // The refusal names the operand off its bus, not one on its bus's edge (two mutants of
+  // the check, < to <= and > to >=, named COS at code 0 or 131071 instead).
+  EXPECT_TRUE(throws_naming<std::out_of_range>(
+      [&] { core.run(Operands{(std::int64_t{1} << 17) - 1, 1024, {0, 0, 0}}); }, {"register 2 (n)", "1024"}));
+  EXPECT_TRUE(throws_naming<std::out_of_range>([&] { core.run(Operands{0, 0, {256, 0, 0}}); },
+                                               {"register 10 (R)", "256"}));
 }
 
 }  // namespace

@@ -73,7 +73,9 @@ def read_points(path):
 class Point:
     def __init__(self, fields, count):
         page = fields.get("page", "")
-        self.kind, _, self.module = page.partition("/")
+        self.kind, _, module = page.partition("/")
+        # Verilator names a module specialised by its parameters NAME__W25, NAME__P12...
+        self.module = re.sub(r"__[A-Z].*$", "", module)
         hier = fields.get("h", "")
         parts = hier.split(".")
         if parts and parts[0] == "TOP":

@@ -122,7 +122,9 @@ do_merge() {
   done
   verilator_coverage --write "$out/merged.dat" "${dats[@]}" >/dev/null
   rm -rf "$out/annotated"
-  verilator_coverage --annotate "$out/annotated" --annotate-min 1 "$out/merged.dat" >"$out/annotate.log" 2>&1 ||
+  # The twins' sources are named relative to twin/ (twin/CMakeLists.txt): annotate from there.
+  out=$(realpath -m "$out")
+  (cd "$root/twin" && verilator_coverage --annotate "$out/annotated" --annotate-min 1 "$out/merged.dat") >"$out/annotate.log" 2>&1 ||
     echo "rtl_coverage.sh: verilator_coverage --annotate failed (see $out/annotate.log)" >&2
   "${summariser[@]}" summary "$out/merged.dat" --out "$out"
 }

@@ -26,8 +26,8 @@ def main():
     env = dict(os.environ, SPECULAR_RTL_COVERAGE=with_variable)
     done = subprocess.run([executable, "--gtest_filter=" + test_filter], env=env, cwd=without,
                           capture_output=True, text=True)
-    if done.returncode != 0:
-        failures.append("%s %s failed: %s" % (executable, test_filter, done.stdout[-2000:]))
+    if done.returncode != 0 or "[  PASSED  ] 1 test." not in done.stdout:
+        failures.append("%s %s did not run one test and pass: %s" % (executable, test_filter, done.stdout[-2000:]))
     files = sorted(glob.glob(os.path.join(with_variable, "*")))
     names = [os.path.basename(f) for f in files]
     if len(files) != 1 or not names[0].startswith("rtlcov-") or not names[0].endswith(".dat"):

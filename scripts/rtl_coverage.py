@@ -22,7 +22,7 @@ design: the top as it appears under TOP. (specular_device, specular_patent, ...)
 instance: a glob over the hierarchy below the design ("u_mul13", "*" for any, "" for the
 top itself); module: the Verilog module of the point; net: a glob over the toggle point's
 net and bit (`above[*]`, `in_range`) or `line:N` for the line points of line N of the
-module's file; reason: why no test can toggle or reach it.
+module's file (NET[LO-HI]: bits LO to HI); reason: why no test can toggle or reach it.
 """
 import argparse
 import fnmatch
@@ -74,8 +74,8 @@ class Point:
     def __init__(self, fields, count):
         page = fields.get("page", "")
         self.kind, _, module = page.partition("/")
-        # Verilator names a module specialised by its parameters NAME__W25, NAME__P12...
-        self.module = re.sub(r"__[A-Z].*$", "", module)
+        # Verilator names a module specialised by its parameters NAME__W25, NAME__pi2...
+        self.module = re.sub(r"__.*$", "", module)
         hier = fields.get("h", "")
         parts = hier.split(".")
         if parts and parts[0] == "TOP":
@@ -127,12 +127,18 @@ def excludes(row, point):
         return False
     if row["net"].startswith("line:"):
         return point.group == "line" and row["net"][5:] == point.line
-    return point.group == "toggle" and fnmatch.fnmatchcase(point.comment, glob(row["net"]))
+    return point.group == "toggle" and net_matches(row["net"], point.comment)
 
 
-def glob(pattern):
-    """The net column's glob: * and ? are wildcards, brackets are the bit's own."""
-    return pattern.replace("[", "[[]")
+def net_matches(pattern, comment):
+    """NET[LO-HI]: bits LO to HI of NET; otherwise a glob whose * and ? are wildcards and
+    whose brackets are the bit's own (`above[*]`, `in_range`)."""
+    bits = re.fullmatch(r"(\w+)\[(\d+)-(\d+)\]", pattern)
+    if bits:
+        point = re.fullmatch(r"(\w+)\[(\d+)\]", comment)
+        return bool(point) and point.group(1) == bits.group(1) and \
+            int(bits.group(2)) <= int(point.group(2)) <= int(bits.group(3))
+    return fnmatch.fnmatchcase(comment, pattern.replace("[", "[[]"))
 
 
 def summary(args):
@@ -183,6 +189,14 @@ def summary(args):
         lines.append("| %s | %d / %d | %s | %d / %d | %s | %d | %d |" % (
             design, line[0], line[2], pct(line[0], line[2]), toggle[0], toggle[2],
             pct(toggle[0], toggle[2]), excluded, missing))
+    nets = OrderedDict()  # the open toggle points by net: its bits together
+    for p, reason in unhit:
+        if reason is None and p.group == "toggle":
+            base, _, bit = p.comment.partition("[")
+            nets.setdefault((p.design, p.instance or "(top)", p.module, base), []).append(bit.rstrip("]"))
+    lines += ["", "## Nets not toggled and not excluded (%d)" % len(nets), ""]
+    lines += ["- %s %s %s %s%s" % (k + ("[%s]" % ",".join(sorted(v, key=lambda b: (len(b), b))) if v != [""] else "",))
+              for k, v in sorted(nets.items())] or ["(none)"]
     lines += ["", "## Points not hit and not excluded", ""]
     lines += ["- " + p.name() for p, reason in unhit if reason is None] or ["(none)"]
     lines += ["", "## Points not hit, excluded", ""]

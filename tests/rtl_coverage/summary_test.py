@@ -86,6 +86,11 @@ def main():
         # An exclusion of another instance leaves u_mul13's bits open.
         done, _ = run(folder, "specular_device\tu_mul14.*\tmultiply_round_saturate\tabove[*]\tr\n")
         check(done.returncode == 1, "an exclusion of u_mul14 closed u_mul13's points", failures)
+        # A bit range: above[1-1] leaves bit 0 open (2 open: it and the else, valid excluded).
+        done, _ = run(folder, "specular_device\tu_mul13.u_mrs\tmultiply_round_saturate\tabove[1-1]\tr\n"
+                              "specular_device\t\tspecular_device\tline:12\tr\n*\t\tspecular_patent\tvalid\tr\n")
+        check(done.returncode == 1 and "1 point(s) neither hit nor excluded" in done.stdout,
+              "bit range above[1-1]: " + done.stdout, failures)
     for f in failures:
         print("FAIL: " + f)
     print("rtl_coverage_summary: %d check(s) failed" % len(failures) if failures else "rtl_coverage_summary: PASS")

@@ -3,6 +3,7 @@
 #
 #   scripts/farm.sh submit REGRESSION [options]   REGRESSION: smoke (minutes), full, coverage
 #                                                 or mutants (issue 37, docs/testing.md)
+#                                                 (coverage: gcov and the RTL's Verilator coverage)
 #   scripts/farm.sh wait DIR                      wait for a Slurm submission's merge
 #   scripts/farm.sh resubmit DIR [options]        run again only the tasks that failed
 #   scripts/farm.sh task DIR ID                   one task (what each array task runs)
@@ -123,7 +124,10 @@ regression_tasks() {
       emit_group study study 6 --workers 1
       ;;
     coverage)  # issue 37: the quick suite under gcov in 8 slices of one coverage build
-      emit_group coverage coverage 8 ;;
+      emit_group coverage coverage 8
+      # and the RTL's line and toggle coverage (Verilator): the twins' and variants' quick
+      # tests in 8 slices, their long tests on operation shard I/8 (scripts/rtl_coverage.sh)
+      emit_group rtl_coverage rtl_coverage 8 --long ;;
     mutants)  # issue 37: Yosys mutants of the three RTL targets, every C++ mutant
       emit_group rtl_mutants_specular_device rtl_mutants 8 --target specular_device --count 200 --seed 1
       emit_group rtl_mutants_specular_device_sync rtl_mutants 8 --target specular_device_sync --count 200 --seed 1
@@ -186,6 +190,7 @@ run_task() {  # run_task DIR ID
            rm -rf "$dir/work/$id" ;;
     # issue 37: coverage slices of the build made at submission; mutants
     coverage) tool=(bash "$root/scripts/coverage.sh" run --build "$dir/build-coverage") ;;
+    rtl_coverage) tool=(bash "$root/scripts/rtl_coverage.sh" run --build "$dir/build-rtlcov") ;;
     rtl_mutants) tool=(python3 "$root/scripts/rtl_mutants.py" run --build "$build_dir" --out "$dir/work/$id")
                  rm -rf "$dir/work/$id"; mkdir -p "$dir/work/$id" ;;
     cpp_mutants) tool=(python3 "$root/scripts/cpp_mutants.py" run)
@@ -235,6 +240,7 @@ run_merge() {  # run_merge DIR
       study) extra=(--out "$dir/merged/$group") ;;
       coverage) tool=(bash "$root/scripts/coverage.sh") extra=(--out "$dir/merged/$group")
                 extra+=(--build "$dir/build-coverage") ;;
+      rtl_coverage) tool=(bash "$root/scripts/rtl_coverage.sh") extra=(--out "$dir/merged/$group") ;;
       rtl_mutants|cpp_mutants) tool=(python3 "$root/scripts/$kind.py") ;;
     esac
     if "${tool[@]}" --merge "${files[@]}" "${extra[@]}" \
@@ -377,6 +383,12 @@ case "$command" in
       echo "farm.sh: building the coverage build (scripts/coverage.sh build)" >&2
       bash "$root/scripts/coverage.sh" build --build "$out_dir/build-coverage" >"$out_dir/logs/build-coverage.log" 2>&1 ||
         die "coverage.sh build failed: see $out_dir/logs/build-coverage.log"
+    fi
+    if cut -f3 "$out_dir/tasks.tsv" | grep -qx rtl_coverage; then
+      # The RTL coverage slices share one build (verilated with COVERAGE), made here once.
+      echo "farm.sh: building the RTL coverage build (scripts/rtl_coverage.sh build)" >&2
+      bash "$root/scripts/rtl_coverage.sh" build --build "$out_dir/build-rtlcov" >"$out_dir/logs/build-rtlcov.log" 2>&1 ||
+        die "rtl_coverage.sh build failed: see $out_dir/logs/build-rtlcov.log"
     fi
     mapfile -t ids < <(cut -f1 "$out_dir/tasks.tsv")
     echo "farm.sh: regression $regression, ${#ids[@]} tasks, folder $out_dir" >&2

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "input.h"
+#include "rtl_coverage.h"  // the RTL coverage build keeps the multiplier's counts
 #include "specular/arith.h"
 #include "specular/core.h"
 
@@ -90,6 +91,7 @@ TEST(RtlMultipliers, EverySweepKATimesEveryIntensityEqualsMulRgb) {
 
   VerilatedContext context;
   Vmultiplier_rgb mul(&context);
+  const specular::RtlCoverageScope coverage(context);
   const std::uint32_t norm_mask = (std::uint32_t{1} << kNormBits) - 1;
   std::uint64_t products = 0, mismatches = 0, reference_mismatches = 0;
   std::string first_mismatch;
@@ -132,6 +134,7 @@ TEST(RtlMultipliers, CornersAndRandomCodesTimesEveryIntensityEqualMulRgb) {
 
   VerilatedContext context;
   Vmultiplier_rgb mul(&context);
+  const specular::RtlCoverageScope coverage(context);
   const std::uint32_t norm_mask = (std::uint32_t{1} << kNormBits) - 1;
   std::uint64_t products = 0, saturated = 0, mismatches = 0;
   std::string first_mismatch;

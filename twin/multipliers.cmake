@@ -8,7 +8,7 @@
 # would duplicate its symbols. Verilator's generated code builds there without -Werror.
 set(RTL_MULTIPLIER_RGB_PARAMS -GNORM_W=31 -GRGB_BITS=8 -GOUT_W=32 -GSHIFT=7)
 set(RTL_MULTIPLIER_RGB_DIR ${CMAKE_CURRENT_BINARY_DIR}/Vmultiplier_rgb)
-verilate(specular_rtl_models PREFIX Vmultiplier_rgb TOP_MODULE multiplier_rgb
+verilate(specular_rtl_models ${RTL_COVERAGE} PREFIX Vmultiplier_rgb TOP_MODULE multiplier_rgb
   DIRECTORY ${RTL_MULTIPLIER_RGB_DIR}
   # Relative to twin/, where Verilator runs: the installed archive names no folder of
   # this machine (issue 35, twin/CMakeLists.txt).
@@ -23,8 +23,10 @@ add_library(specular_rtl_multiplier_rgb INTERFACE)
 target_link_libraries(specular_rtl_multiplier_rgb INTERFACE specular_rtl_models)
 target_include_directories(specular_rtl_multiplier_rgb SYSTEM INTERFACE ${RTL_MULTIPLIER_RGB_DIR}
                            ${VERILATOR_ROOT}/include ${VERILATOR_ROOT}/include/vltstd)
+target_include_directories(specular_rtl_multiplier_rgb INTERFACE ${RTL_COVERAGE_INCLUDE})
 target_compile_definitions(specular_rtl_multiplier_rgb INTERFACE VM_SC=0 VM_TRACE=1
-                           VM_TRACE_VCD=1 VM_COVERAGE=0 VM_TRACE_FST=0)
+                           VM_TRACE_VCD=1 VM_COVERAGE=$<BOOL:${SPECULAR_RTL_COVERAGE}> VM_TRACE_FST=0
+                           $<$<BOOL:${SPECULAR_RTL_COVERAGE}>:SPECULAR_RTL_COVERAGE=1>)
 
 # tests/ defines its executables after this folder (tests/CMakeLists.txt globs them):
 # link the test at the end of the top-level directory, once it exists.

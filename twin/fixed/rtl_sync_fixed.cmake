@@ -51,14 +51,14 @@ function(specular_rtl_sync_fixed)
   string(REPLACE "\n" ";" params "${probe_out}")
   # Relative to twin/, as the sources are (twin/CMakeLists.txt: no absolute path in the archive).
   file(RELATIVE_PATH rom_words ${CMAKE_CURRENT_SOURCE_DIR} ${SPECULAR_RTL_SYNC_FIXED_DIR}/rom_words_fixed.vlt)
-  verilate(specular_rtl_models PREFIX Vspecular_device_sync_fixed_${tag}
+  verilate(specular_rtl_models ${RTL_COVERAGE} PREFIX Vspecular_device_sync_fixed_${tag}
     TOP_MODULE specular_device_sync
     SOURCES ${rom_words} ${RTL_SYNC_SOURCES}
     VERILATOR_ARGS ${RTL_VERILATOR_ARGS} ${params}
     OPT_FAST ${RTL_OPT})
   # The drawn twin (specular_device) with the same parameters: RtlCycleModel, the TLM
   # rtl target and RtlDevice (without a VCD) use it for this configuration.
-  verilate(specular_rtl_models PREFIX Vspecular_device_fixed_${tag}
+  verilate(specular_rtl_models ${RTL_COVERAGE} PREFIX Vspecular_device_fixed_${tag}
     TOP_MODULE specular_device
     SOURCES ${rom_words} ${RTL_TOP} ${RTL_SOURCES}
     VERILATOR_ARGS ${RTL_VERILATOR_ARGS} ${params}

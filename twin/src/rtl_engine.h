@@ -17,6 +17,7 @@
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_cycle_model.h"
 #include "rom_loader.h"
+#include "rtl_coverage.h"
 #include "thread_context_guard.h"
 
 namespace specular {
@@ -164,6 +165,7 @@ class VerilatedEngine final : public RtlCycleModel::Engine {
   VerilatedContext context_;
   ThreadContextGuard context_guard_{context_};  // between the two: see there
   Model top_;
+  RtlCoverageScope coverage_{context_};  // after the model: read before it goes
   std::uint64_t quarter_ = 0;
   bool select36_ = false;
   bool done35_ = true;

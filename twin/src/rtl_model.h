@@ -20,6 +20,7 @@
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_device_base.h"
 #include "rom_loader.h"
+#include "rtl_coverage.h"
 #include "thread_context_guard.h"
 #include "verilated_clock.h"
 
@@ -88,6 +89,7 @@ struct RtlModel final : RtlDeviceBase::Verilated {
   };
   ThreadContextGuard context_guard{context};  // before the model: see there
   Top top{&context};
+  RtlCoverageScope coverage{context};  // after the model: read before it goes
   std::unique_ptr<Writer> writer;
   Outputs outputs{};
   Nets nets{};

@@ -18,6 +18,7 @@
 #include "specular/rom38_banks.h"
 #include "specular/twin/rtl_sync_cycle_model.h"
 #include "rom_loader.h"
+#include "rtl_coverage.h"
 #include "thread_context_guard.h"
 #include "verilated_clock.h"
 
@@ -179,6 +180,7 @@ class SyncEngine final : public RtlSyncCycleModel::Engine {
   VerilatedContext context_;
   ThreadContextGuard context_guard_{context_};  // between the two: see there
   Top top_;
+  RtlCoverageScope coverage_{context_};  // after the model: read before it goes
   std::uint64_t edges_ = 0;
   bool loaded_ = false;
   bool in_flight_ = false;

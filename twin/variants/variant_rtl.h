@@ -10,7 +10,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "rtl_coverage.h"
 #include "specular/variants/variant.h"
+#if SPECULAR_RTL_COVERAGE
+#include "../src/thread_context_guard.h"
+#endif
 
 namespace specular {
 namespace variants {
@@ -35,6 +39,10 @@ class VariantRtl {
     top_.reset_n = 1;
     top_.eval();
   }
+
+#if SPECULAR_RTL_COVERAGE
+  ~VariantRtl() { context_guard_.enter(); }  // the model's scopes unregister from its context
+#endif
 
   /// Runs `count` operations: next(i) gives operation i's Operands, sink(i, result)
   /// takes its result, in order. Throws std::runtime_error if the top stays without a
@@ -90,7 +98,16 @@ class VariantRtl {
     top_.eval();
   }
 
+#if SPECULAR_RTL_COVERAGE
+  // The RTL coverage build (rtl_coverage.h): a context of the model's own, so its counts
+  // are its own, read before the model goes.
+  VerilatedContext context_;
+  ThreadContextGuard context_guard_{context_};  // between the two (thread_context_guard.h)
+  Top top_{&context_};
+  RtlCoverageScope coverage_{context_};
+#else
   Top top_;
+#endif
   std::uint64_t clocks_ = 0;
 };
 

@@ -453,6 +453,22 @@ TEST(MisuseTlmConstruction, AFormatWiderThanItsRegisterIsRefusedNamingIt) {
   }
 }
 
+// ROM38_K too (a C++ mutant deleted its check and no test noticed): U16.17 is 33 bits.
+// COS, N and RGB cannot be: Widths::validate caps them at 31, 16 and 16 bits first.
+TEST(MisuseTlmConstruction, ARom38FormatWiderThanItsRegisterIsRefusedNamingIt) {
+  Config config;
+  config.widths.rom38_int_bits = 16;
+  config.widths.rom38_frac_bits = 17;
+  try {
+    SpecularLtTarget target("target", config);
+    FAIL() << "a 33-bit ROM38_K format was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("ROM38_K format"), std::string::npos) << what;
+    EXPECT_NE(what.find("is 33 bits wide"), std::string::npos) << what;
+  }
+}
+
 TEST(MisuseTlmConstruction, AClockPeriodOfZeroIsRefusedNamingIt) {
   try {
     SpecularLtTarget target("target", Config{}, sc_core::SC_ZERO_TIME);

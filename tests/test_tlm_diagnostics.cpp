@@ -7,7 +7,8 @@
 //   not serialise accesses (the contract in target.h leaves that to the derived class)
 //   refuses every write that would change an operand or start an operation while one
 //   runs, with STATUS cause busy, and leaves the running operation's operands alone;
-// - a refused TLM_IGNORE_COMMAND is reported as "ignore".
+// - a refused TLM_IGNORE_COMMAND is reported as "ignore";
+// - a byte-enable array longer than the data counts only as far as the data.
 // Expected values are the standard's names, the register map's offsets and causes, and
 // the operands written: nothing read back from the code under test.
 #include <gtest/gtest.h>
@@ -315,6 +316,40 @@ TEST(TargetReports, ARefusedIgnoreCommandIsReportedAsIgnore) {
             std::string::npos)
       << reports[0];
   EXPECT_NE(reports[0].find("refused with TLM_ADDRESS_ERROR_RESPONSE"), std::string::npos) << reports[0];
+}
+
+// A byte-enable array longer than the data: IEEE 1666 applies it byte for byte, so only
+// its first data-length entries count (a mutant that also read the entry past the data
+// survived every other test). Bytes 0-3 enabled, 4-7 disabled: the 4-byte write is whole.
+TEST(TargetByteEnables, AnArrayLongerThanTheDataCountsOnlyAsFarAsTheData) {
+  tlm::tlm_response_status response = tlm::TLM_INCOMPLETE_RESPONSE;
+  std::uint32_t n_after = 0;
+  LtBench bench("bench", [&](LtBench& b) {
+    std::uint32_t n = 7;
+    unsigned char enables[8] = {TLM_BYTE_ENABLED, TLM_BYTE_ENABLED, TLM_BYTE_ENABLED, TLM_BYTE_ENABLED,
+                                TLM_BYTE_DISABLED, TLM_BYTE_DISABLED, TLM_BYTE_DISABLED, TLM_BYTE_DISABLED};
+    tlm::tlm_generic_payload tx;
+    tx.set_command(tlm::TLM_WRITE_COMMAND);
+    tx.set_address(offset_of(Reg::n));
+    tx.set_data_ptr(reinterpret_cast<unsigned char*>(&n));
+    tx.set_data_length(4);
+    tx.set_streaming_width(4);
+    tx.set_byte_enable_ptr(enables);
+    tx.set_byte_enable_length(8);
+    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    sc_time delay = sc_core::SC_ZERO_TIME;
+    b.socket->b_transport(tx, delay);
+    response = tx.get_response_status();
+    tx.set_command(tlm::TLM_READ_COMMAND);
+    tx.set_data_ptr(reinterpret_cast<unsigned char*>(&n_after));
+    tx.set_byte_enable_ptr(nullptr);
+    tx.set_byte_enable_length(0);
+    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+    b.socket->b_transport(tx, delay);
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(response, tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(n_after, 7u);
 }
 
 }  // namespace

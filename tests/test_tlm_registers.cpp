@@ -208,6 +208,28 @@ TEST(TlmRegisters, BusErrorsGetTheirTlmResponses) {
 
 // STATUS.done is set by an operation, drives done_irq, and clears on writing 1;
 // CONTROL reads 0 (START is self-clearing); a later error does not disturb done.
+// Register 9's high words (a C++ mutant that left REG9_PASS1_HI unwritten survived: every
+// other test's pass 1 stays below 1024, so its high word is the reset value 0). cos code 1
+// is 2^-16, whose log2 ROM 5 gives exactly: pass 1 = a − n·log2 cos = 1 + 100·16 = 1601,
+// on S14.22 the code 1601·2^22 = 0x1'9040'0000. Pass 2 = 1 − ½·log2 1601 ≈ −4.3: under
+// `literal` negative, so its high word is all ones.
+TEST(TlmRegisters, InspectionRegistersHoldRegister9sHighWords) {
+  Config config;
+  config.saturation = Saturation::literal;
+  run(
+      {Kind::lt},
+      [](TlmBench& b) {
+        Endpoint& e = b.at(0);
+        ASSERT_EQ(e.write(Reg::n, 100), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(e.write(Reg::cos, 1), tlm::TLM_OK_RESPONSE);
+        ASSERT_EQ(e.write(Reg::control, control_bits::start), tlm::TLM_OK_RESPONSE);
+        EXPECT_EQ(e.read(Reg::reg9_pass1_hi), 0x1u);
+        EXPECT_EQ(e.read(Reg::reg9_pass1_lo), 0x90400000u);
+        EXPECT_EQ(e.read(Reg::reg9_pass2_hi), 0xFFFFFFFFu) << "pass 2 is negative under literal";
+      },
+      config);
+}
+
 TEST(TlmRegisters, StatusDoneIsWriteOneToClearAndControlReadsZero) {
   run({Kind::lt}, [](TlmBench& b) {
     Endpoint& e = b.at(0);

@@ -48,7 +48,7 @@ CONTROL_TESTS = ["test_control_protocol", "test_control_timing", "test_block_dff
                  "test_power_on_reset"]
 TLM_TESTS = ["test_tlm_registers", "test_tlm_legal_use", "test_misuse_tlm", "test_tlm_timing", "test_tlm_idle",
              "test_tlm_integration", "test_tlm_operand_burst", "test_tlm_strict_delay", "test_tlm_rtl",
-             "test_tlm_diagnostics"]
+             "test_tlm_diagnostics", "test_tlm_access_sweep", "test_tlm_interrupt_orders", "test_tlm_operand_classes"]
 FILES = [("arith.cpp", CORE_TESTS), ("core.cpp", CORE_TESTS),
          ("control/control_unit16.cpp", CONTROL_TESTS), ("control/d_flip_flop.cpp", CONTROL_TESTS),
          ("control/gates.cpp", CONTROL_TESTS), ("tlm/target.cpp", TLM_TESTS)]

@@ -304,6 +304,10 @@ def run(args):
     signal.signal(signal.SIGTERM, interrupted)
     signal.signal(signal.SIGINT, interrupted)
     all_targets = sorted({t for _, ts in FILES for t in ts})
+    # Configure again first: a test file added since the last configure is a target the
+    # generated build files do not know yet (a build of it by name fails before the glob
+    # is looked at again).
+    subprocess.run(["cmake", build], capture_output=True)
     if not build_targets(build, all_targets, log):
         die("the unmutated tree does not build (see %s)" % log, 1)
     # The unmutated tests must pass, or a failure would "kill" every mutant.

@@ -352,5 +352,75 @@ TEST(TargetByteEnables, AnArrayLongerThanTheDataCountsOnlyAsFarAsTheData) {
   EXPECT_EQ(n_after, 7u);
 }
 
+// Three more the C++ mutants found untested (each seen killing its mutant):
+// - a debug access with TLM_IGNORE_COMMAND moves no byte and returns 0 (docs/tlm.md);
+// - a 1- or 2-byte read inside a window reads the word it falls in (BATCH_OUT + 4 is the
+//   first operation's G, + 12 the second's R), the bytes of the host's word;
+// - the report of a refused BATCH_COS word names that word's value, not another's.
+TEST(TargetWindows, DebugIgnoreMovesNothingAndSubWordReadsFindTheirWord) {
+  static std::vector<std::string> reports;
+  sc_core::sc_report_handler::set_handler(
+      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
+        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
+          reports.push_back(report.get_msg());
+      });
+  const Operands op{50000, 40, {200, 100, 50}};
+  const Result first = Core().run(Operands{64000, op.n, op.rgb});
+  const Result second = Core().run(Operands{65000, op.n, op.rgb});
+  unsigned ignored = 99;
+  std::uint8_t g_byte = 0;
+  std::uint16_t r_half = 0;
+  tlm::tlm_response_status batch_response = tlm::TLM_OK_RESPONSE;
+  LtBench bench("bench", [&](LtBench& b) {
+    const auto access = [&](tlm::tlm_command command, std::uint64_t address, void* data, unsigned length) {
+      tlm::tlm_generic_payload tx;
+      tx.set_command(command);
+      tx.set_address(address);
+      tx.set_data_ptr(static_cast<unsigned char*>(data));
+      tx.set_data_length(length);
+      tx.set_streaming_width(length);
+      tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+      sc_time delay = sc_core::SC_ZERO_TIME;
+      b.socket->b_transport(tx, delay);
+      return tx.get_response_status();
+    };
+    std::uint32_t word = 0;
+    tlm::tlm_generic_payload dbg;
+    dbg.set_command(tlm::TLM_IGNORE_COMMAND);
+    dbg.set_address(offset_of(Reg::n));
+    dbg.set_data_ptr(reinterpret_cast<unsigned char*>(&word));
+    dbg.set_data_length(4);
+    ignored = b.socket->transport_dbg(dbg);
+    for (auto [reg, value] : {std::pair{Reg::n, op.n}, {Reg::r, op.rgb[0]}, {Reg::g, op.rgb[1]},
+                              {Reg::b, op.rgb[2]}, {Reg::cos, op.cos}}) {
+      word = static_cast<std::uint32_t>(value);
+      access(tlm::TLM_WRITE_COMMAND, offset_of(reg), &word, 4);
+    }
+    word = control_bits::start;
+    access(tlm::TLM_WRITE_COMMAND, offset_of(Reg::control), &word, 4);
+    std::uint32_t pair[2] = {64000, 65000};  // cos 0.977 and 0.992: bright, R, G, B apart
+    access(tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), pair, 8);
+    access(tlm::TLM_READ_COMMAND, offset_of(Reg::batch_out) + 4, &g_byte, 1);
+    access(tlm::TLM_READ_COMMAND, offset_of(Reg::batch_out) + 12, &r_half, 2);
+    std::uint32_t batch[3] = {1000, 2000, 70000};  // word 2 above 1.0 = 65536
+    batch_response = access(tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), batch, 12);
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(ignored, 0u) << "an ignore command moves no byte";
+  // Pins 24-26 as 32-bit two's complement words in the host's byte order (docs/integration.md).
+  const std::uint32_t g_word = static_cast<std::uint32_t>(first.out[1]);
+  const std::uint32_t r_word = static_cast<std::uint32_t>(second.out[0]);
+  std::uint8_t g_first = 0;
+  std::uint16_t r_first = 0;
+  std::memcpy(&g_first, &g_word, 1);
+  std::memcpy(&r_first, &r_word, 2);
+  ASSERT_NE(g_word & 0xFFu, static_cast<std::uint32_t>(first.out[0]) & 0xFFu) << "R and G must differ to tell the words apart";
+  EXPECT_EQ(g_byte, g_first) << "byte 0 of the first operation's G";
+  EXPECT_EQ(r_half, r_first) << "bytes 0-1 of the second operation's R";
+  EXPECT_EQ(batch_response, tlm::TLM_GENERIC_ERROR_RESPONSE);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_NE(reports[0].find("BATCH_COS = 0x11170 (70000)"), std::string::npos) << reports[0];
+}
+
 }  // namespace
 }  // namespace specular

@@ -13,7 +13,8 @@ is not counted. The file is restored after every mutant (and on an interrupt).
   cpp_mutants.py list                              every mutant: id, file:line, change
   cpp_mutants.py run [--sample K --seed S] [--ids A,B] [--shard I/N] [--partial F] [--build DIR]
   cpp_mutants.py merge PARTIAL...                  shards -> per-file scores (exit 1 below --goal)
-  cpp_mutants.py report PARTIAL...                 the scores of any partials together (strata, samples)
+  cpp_mutants.py report PARTIAL...                 the scores of any partials together (strata, samples;
+                                                   a mutant given twice counts as the later partial says)
   cpp_mutants.py check-triage                      CI: every triaged mutant still exists, with a reason
 
 A survivor argued equivalent (it changes no output the device's contract lets anyone see)
@@ -377,7 +378,13 @@ def wilson(k, n, z=1.96):
 
 
 def report(partials, goal):
-    results = [r for p in partials for r in p["results"]]
+    # A mutant in several partials counts once, as the last one says: a re-run of the
+    # survivors (--ids) against newer tests, given after the first run, replaces its verdict.
+    latest = {}
+    for p in partials:
+        for r in p["results"]:
+            latest[(r["file"], r["line"], r["change"], r["mutated"])] = r
+    results = list(latest.values())
     equivalent = triage()
     for r in results:  # a survivor argued equivalent is counted apart
         if "original" not in r:  # a partial of before the field: the line of this tree

@@ -40,6 +40,27 @@ namespace {
 using sc_core::sc_time;
 using sc_core::SC_NS;
 
+/// One b_transport through `socket` with every payload field set, from a thread; the
+/// annotated delay is waited out. Returns the target's response.
+template <class Socket>
+tlm::tlm_response_status transport(Socket& socket, tlm::tlm_command command, std::uint64_t address,
+                                   void* data, unsigned length, unsigned char* enables = nullptr,
+                                   unsigned enables_length = 0) {
+  tlm::tlm_generic_payload tx;
+  tx.set_command(command);
+  tx.set_address(address);
+  tx.set_data_ptr(static_cast<unsigned char*>(data));
+  tx.set_data_length(length);
+  tx.set_streaming_width(length);
+  tx.set_byte_enable_ptr(enables);
+  tx.set_byte_enable_length(enables_length);
+  tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
+  sc_time delay = sc_core::SC_ZERO_TIME;
+  socket->b_transport(tx, delay);
+  sc_core::wait(delay);
+  return tx.get_response_status();
+}
+
 TEST(ResponseName, NamesEveryStatusAsTheStandardSpellsIt) {
   EXPECT_STREQ(response_name(tlm::TLM_OK_RESPONSE), "TLM_OK_RESPONSE");
   EXPECT_STREQ(response_name(tlm::TLM_INCOMPLETE_RESPONSE), "TLM_INCOMPLETE_RESPONSE");
@@ -171,17 +192,7 @@ class TwoMasters : public sc_core::sc_module {
 
   tlm::tlm_response_status access(tlm::tlm_command command, std::uint64_t address, void* data,
                                   unsigned length) {
-    tlm::tlm_generic_payload tx;
-    tx.set_command(command);
-    tx.set_address(address);
-    tx.set_data_ptr(static_cast<unsigned char*>(data));
-    tx.set_data_length(length);
-    tx.set_streaming_width(length);
-    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-    sc_time delay = sc_core::SC_ZERO_TIME;
-    socket->b_transport(tx, delay);
-    sc_core::wait(delay);
-    return tx.get_response_status();
+    return transport(socket, command, address, data, length);
   }
   tlm::tlm_response_status write(std::uint64_t address, std::uint32_t value) {
     return access(tlm::TLM_WRITE_COMMAND, address, &value, 4);
@@ -294,16 +305,7 @@ TEST(TargetReports, ARefusedIgnoreCommandIsReportedAsIgnore) {
   tlm::tlm_response_status response = tlm::TLM_OK_RESPONSE;
   LtBench bench("bench", [&](LtBench& b) {
     std::uint32_t word = 0;
-    tlm::tlm_generic_payload tx;
-    tx.set_command(tlm::TLM_IGNORE_COMMAND);
-    tx.set_address(hole);
-    tx.set_data_ptr(reinterpret_cast<unsigned char*>(&word));
-    tx.set_data_length(4);
-    tx.set_streaming_width(4);
-    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-    sc_time delay = sc_core::SC_ZERO_TIME;
-    b.socket->b_transport(tx, delay);
-    response = tx.get_response_status();
+    response = transport(b.socket, tlm::TLM_IGNORE_COMMAND, hole, &word, 4);
   });
   sc_core::sc_start();
   EXPECT_EQ(response, tlm::TLM_ADDRESS_ERROR_RESPONSE);
@@ -328,24 +330,8 @@ TEST(TargetByteEnables, AnArrayLongerThanTheDataCountsOnlyAsFarAsTheData) {
     std::uint32_t n = 7;
     unsigned char enables[8] = {TLM_BYTE_ENABLED, TLM_BYTE_ENABLED, TLM_BYTE_ENABLED, TLM_BYTE_ENABLED,
                                 TLM_BYTE_DISABLED, TLM_BYTE_DISABLED, TLM_BYTE_DISABLED, TLM_BYTE_DISABLED};
-    tlm::tlm_generic_payload tx;
-    tx.set_command(tlm::TLM_WRITE_COMMAND);
-    tx.set_address(offset_of(Reg::n));
-    tx.set_data_ptr(reinterpret_cast<unsigned char*>(&n));
-    tx.set_data_length(4);
-    tx.set_streaming_width(4);
-    tx.set_byte_enable_ptr(enables);
-    tx.set_byte_enable_length(8);
-    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-    sc_time delay = sc_core::SC_ZERO_TIME;
-    b.socket->b_transport(tx, delay);
-    response = tx.get_response_status();
-    tx.set_command(tlm::TLM_READ_COMMAND);
-    tx.set_data_ptr(reinterpret_cast<unsigned char*>(&n_after));
-    tx.set_byte_enable_ptr(nullptr);
-    tx.set_byte_enable_length(0);
-    tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-    b.socket->b_transport(tx, delay);
+    response = transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(Reg::n), &n, 4, enables, 8);
+    transport(b.socket, tlm::TLM_READ_COMMAND, offset_of(Reg::n), &n_after, 4);
   });
   sc_core::sc_start();
   EXPECT_EQ(response, tlm::TLM_OK_RESPONSE);
@@ -373,16 +359,7 @@ TEST(TargetWindows, DebugIgnoreMovesNothingAndSubWordReadsFindTheirWord) {
   tlm::tlm_response_status batch_response = tlm::TLM_OK_RESPONSE;
   LtBench bench("bench", [&](LtBench& b) {
     const auto access = [&](tlm::tlm_command command, std::uint64_t address, void* data, unsigned length) {
-      tlm::tlm_generic_payload tx;
-      tx.set_command(command);
-      tx.set_address(address);
-      tx.set_data_ptr(static_cast<unsigned char*>(data));
-      tx.set_data_length(length);
-      tx.set_streaming_width(length);
-      tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
-      sc_time delay = sc_core::SC_ZERO_TIME;
-      b.socket->b_transport(tx, delay);
-      return tx.get_response_status();
+      return transport(b.socket, command, address, data, length);
     };
     std::uint32_t word = 0;
     tlm::tlm_generic_payload dbg;

@@ -18,10 +18,9 @@ is not counted. The file is restored after every mutant (and on an interrupt).
   cpp_mutants.py check-triage                      CI: every triaged mutant still exists, with a reason
 
 A survivor argued equivalent (it changes no output the device's contract lets anyone see)
-is listed in scripts/cpp_mutants_triage.tsv -- file, change, the line, the mutated line, the
-reason --
-and counted apart: the score is killed / (killed + survived), equivalents left out, as
-for the RTL mutants that Yosys proves equivalent.
+is listed in scripts/cpp_mutants_triage.tsv (file, change, the line, the mutated line, the
+reason) and counted apart: the score is killed / (killed + survived), equivalents left
+out, as for the RTL mutants that Yosys proves equivalent.
 
 The ids are stable for a given source tree (files in a fixed order, lines top-down,
 changes left to right), so a seeded sample and a shard (id mod N = I) are the same on
@@ -29,6 +28,7 @@ every machine. Run it in a tree of its own (the farm task copies the commit): it
 the sources while it runs.
 """
 import argparse
+import collections
 import concurrent.futures
 import json
 import math
@@ -82,13 +82,16 @@ def key_of(m):
 
 
 def check_triage():
-    """Every triaged mutant is still a mutant of the tree, and has a reason."""
-    current = {key_of(m) for m in all_mutants()}
+    """Every triaged mutant is still exactly one mutant of the tree, and has a reason (a line
+    whose text repeats would make the entry name two mutants, one of them unargued)."""
+    current = collections.Counter(key_of(m) for m in all_mutants())
     status = 0
     entries = triage()
     for key, reason in entries.items():
-        if key not in current:
-            print("cpp_mutants.py: triaged mutant no longer in the tree: %s %s: %s -> %s" % key, file=sys.stderr)
+        if current[key] != 1:
+            where = "no longer" if current[key] == 0 else "%d times" % current[key]
+            print("cpp_mutants.py: triaged mutant %s in the tree: %s %s: %s -> %s" % ((where,) + key),
+                  file=sys.stderr)
             status = 1
         if not reason.strip():
             print("cpp_mutants.py: triaged mutant without a reason: %s %s: %s -> %s" % key, file=sys.stderr)
@@ -254,7 +257,7 @@ def run_in_copy(args):
     DIR/build (Release, ccache when present), then this script of the copy mutates the copy.
     The copy builds specular and specular_core as shared libraries whose change relinks no
     executable (CMAKE_LINK_DEPENDS_NO_SHARED): a mutant then costs one object and one
-    library link, not the relinking of every test executable of its file (up to 10, some
+    library link, not the relinking of every test executable of its file (up to 13, some
     with the verilated twin)."""
     copy = os.path.abspath(args.copy)
     src, build = os.path.join(copy, "src"), os.path.join(copy, "build")
@@ -383,14 +386,14 @@ def report(partials, goal):
     latest = {}
     for p in partials:
         for r in p["results"]:
-            latest[(r["file"], r["line"], r["change"], r["mutated"])] = r
+            if "original" not in r:  # a partial of before the field: the line of this tree
+                with open(os.path.join(SRC, r["file"])) as f:
+                    r["original"] = f.readlines()[r["line"] - 1].strip()
+            r["key"] = (r["file"], r["change"], r["original"], r["mutated"])  # as key_of()
+            latest[(r["file"], r["line"], r["change"], r["mutated"])] = r  # the line: texts repeat
     results = list(latest.values())
     equivalent = triage()
     for r in results:  # a survivor argued equivalent is counted apart
-        if "original" not in r:  # a partial of before the field: the line of this tree
-            with open(os.path.join(SRC, r["file"])) as f:
-                r["original"] = f.readlines()[r["line"] - 1].strip()
-        r["key"] = (r["file"], r["change"], r["original"], r["mutated"])
         if r["verdict"] == "survived" and r["key"] in equivalent:
             r["verdict"] = "equivalent"
     print("file | mutants run | killed | survived | equivalent (argued) | uncompilable | score (killed / (killed + survived))")

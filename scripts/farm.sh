@@ -8,7 +8,7 @@
 #   scripts/farm.sh resubmit DIR [options]        run again only the tasks that failed
 #   scripts/farm.sh task DIR ID                   one task (what each array task runs)
 #   scripts/farm.sh merge DIR                     the merge (what the merge job runs)
-#   scripts/farm.sh list REGRESSION [--build DIR] its tasks, one a line
+#   scripts/farm.sh list REGRESSION [--build DIR] [--groups REGEX]  its tasks, one a line
 #
 # Options of submit and resubmit:
 #   --out DIR          the run's folder (default: farm-REGRESSION-<UTC time> here)
@@ -19,6 +19,9 @@
 #   --array-width W    Slurm: at most W array tasks at a time (sbatch --array=...%W)
 #   --netlists DIR     full: the mapped devices for the gate-level tasks (DIR/TOP/ from
 #                      scripts/silicon.sh --no-gatesim); default: mapped at submission
+#   --groups REGEX     submit (and list) only the groups whose name matches this extended
+#                      regular expression, every shard of each (e.g. one mutant target:
+#                      --groups '^rtl_mutants_specular_device$'); the merge merges those
 #
 # Every task is (what, index, count) -> a partial result (specular_tb or specular_prove
 # --shard I/N --partial FILE); the merge checks that every task finished (naming the
@@ -137,13 +140,25 @@ regression_tasks() {
   esac
 }
 
+# The regression's tasks, less the groups --groups leaves out (ids kept: the same task
+# has the same id in every selection).
+selected_tasks() {  # selected_tasks REGRESSION
+  local all
+  all=$(regression_tasks "$1") || exit 2
+  [[ -n $groups ]] || { printf '%s\n' "$all"; return; }
+  awk -v re="$groups" 'BEGIN { exit !("" ~ re || 1) }' </dev/null 2>/dev/null ||
+    die "--groups: '$groups' is not a valid extended regular expression"
+  awk -F'\t' -v re="$groups" '$2 ~ re' <<<"$all" | grep . ||
+    die "--groups: '$groups' matches no group of $1 (its groups: $(cut -f2 <<<"$all" | uniq | tr '\n' ' '))"
+}
+
 # ---- options ---------------------------------------------------------------------------
 parse_options() {
   out_dir="" build="$root/build" executor="" jobs="$(nproc)" partition="" account=""
-  time_limit="01:00:00" width="" netlists=""
+  time_limit="01:00:00" width="" netlists="" groups=""
   while (($#)); do
     case "$1" in
-      --out|--build|--executor|--jobs|--partition|--account|--time|--array-width|--netlists)
+      --out|--build|--executor|--jobs|--partition|--account|--time|--array-width|--netlists|--groups)
         (($# >= 2)) || die "option $1 needs a value"
         case "$1" in
           --out) out_dir=$2 ;;
@@ -155,6 +170,7 @@ parse_options() {
           --partition) partition=$2 ;;
           --netlists) netlists=$(cd "$2" 2>/dev/null && pwd) || die "--netlists: '$2' is not a folder" ;;
           --account) account=$2 ;;
+          --groups) groups=$2 ;;
           --time) [[ $2 =~ ^[0-9:-]+$ ]] || die "--time: '$2' is not a Slurm time limit (e.g. 30, 01:00:00, 1-00:00:00)"
                   time_limit=$2 ;;
           --array-width) [[ $2 =~ ^[0-9]+$ ]] && (($2 >= 1)) || die "--array-width: '$2' is not a count >= 1"
@@ -356,7 +372,7 @@ case "$command" in
     parse_options "$@"
     [[ -x $(tool_of "$build" tb) && -x $(tool_of "$build" prove) ]] ||
       die "no $(tool_of "$build" tb) or $(tool_of "$build" prove) (build them, or give --build DIR)"
-    tasks=$(regression_tasks "$regression")
+    tasks=$(selected_tasks "$regression")
     [[ -n $out_dir ]] || out_dir="$PWD/farm-$regression-$(date -u +%Y%m%dT%H%M%SZ)"
     [[ ! -e $out_dir || -z $(ls -A "$out_dir") ]] || die "--out: '$out_dir' exists and is not empty"
     mkdir -p "$out_dir"/{logs,status,partials,work}
@@ -413,8 +429,8 @@ case "$command" in
   task) (($# == 3)) || die "usage: farm.sh task DIR ID"; run_task "$2" "$3" ;;
   merge) (($# == 2)) || die "usage: farm.sh merge DIR"; run_merge "$2" ;;
   wait) (($# == 2)) || die "usage: farm.sh wait DIR"; wait_for "$(cd "$2" && pwd)" ;;
-  list) (($# >= 2)) || die "usage: farm.sh list REGRESSION [--build DIR]"
-        regression=$2; shift 2; parse_options "$@"; regression_tasks "$regression" ;;
+  list) (($# >= 2)) || die "usage: farm.sh list REGRESSION [--build DIR] [--groups REGEX]"
+        regression=$2; shift 2; parse_options "$@"; selected_tasks "$regression" ;;
   -h|--help|"") sed -n '2,27p' "$script" | sed 's/^# \{0,1\}//' ;;
   *) die "unknown command '$command' (allowed: submit, resubmit, wait, task, merge, list)" ;;
 esac

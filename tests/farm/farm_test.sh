@@ -51,6 +51,16 @@ while IFS=$'\t' read -r group kind args; do
     fail "unsharded $group failed"
 done < <("$farm" list smoke --build "$build" | awk -F'\t' '!seen[$2]++ {sub(/ --shard [0-9]+\/[0-9]+$/, "", $4); print $2 "\t" $3 "\t" $4}')
 
+# --groups: only the matching groups, every shard, with the ids of the whole list; a
+# pattern matching nothing, or not a regular expression, is refused with exit 2.
+diff <("$farm" list smoke --build "$build" --groups '^prove_rtl$') \
+     <("$farm" list smoke --build "$build" | awk -F'\t' '$2 == "prove_rtl"') || fail "--groups '^prove_rtl\$' differs from prove_rtl's rows"
+[[ $("$farm" list smoke --build "$build" --groups '^prove_rtl$' | wc -l) -eq 4 ]] || fail "--groups '^prove_rtl\$': not its 4 shards"
+for bad in '^no_such_group$' '('; do
+  status=0; "$farm" list smoke --build "$build" --groups "$bad" >/dev/null 2>"$scratch/groups.err" || status=$?
+  [[ $status -eq 2 ]] && grep -qF -- "--groups: '$bad'" "$scratch/groups.err" || fail "--groups '$bad': exit $status, not 2 naming it"
+done
+
 summary_block() { sed -n '/^summary:/,$p' "$1" | grep -v '^  run time '; }
 check_merged() {  # check_merged RUN_DIR
   local dir=$1 group

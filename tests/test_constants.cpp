@@ -119,6 +119,35 @@ TEST(Rom38, AWordAboveItsFormatIsRefusedNotSaturated) {
   EXPECT_NEAR(static_cast<double>(device_energy.rom38().k(0)), static_cast<double>(core.rom38().k(0)), 2.0);
 }
 
+TEST(Rom38, AWordOnItsFormatsLargestCodeIsKeptAndTheFirstAboveIsRefused) {
+  // U8.1 holds at most 255.5 (code 511). Energy × minimax, from the spec's formula
+  // s·(n+2)/(2π), rounds to code 511 first at some n (kept: it fits) and above it two n
+  // later (refused, named): the refusal must name the first word above the largest code,
+  // not the first word on it (cpp_mutants.py's arith.cpp `>` -> `>=` mutant).
+  const double s = 1.664245923;
+  auto word = [&](unsigned n) { return std::llround(2.0 * s * (n + 2) / (2 * M_PI)); };
+  unsigned on_largest = 0, above = 0;
+  for (unsigned n = 1; n <= 1000 && above == 0; ++n) {
+    if (word(n) == 511 && on_largest == 0) on_largest = n;
+    if (word(n) > 511) above = n;
+  }
+  ASSERT_NE(on_largest, 0u) << "no n rounds onto U8.1's largest code: the test needs another format";
+  ASSERT_GT(above, on_largest);
+  Config config;
+  config.widths.rom38_int_bits = 8;
+  config.widths.rom38_frac_bits = 1;
+  config.normalisation = Normalisation::energy;
+  config.constants = Constants::minimax;
+  try {
+    Core core(config);
+    FAIL() << "U8.1 cannot hold s·K(" << above << ")";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("ROM 38 word for n = " + std::to_string(above) + " is"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PatentConstants, BitIdenticalToTheDeviceBeforePin19AndRom38Grew) {
   // Today's device: pin 19 U10.8, ROM 38 U9.16. Before issue 14: U10.1 and U8.16.
   Config before;

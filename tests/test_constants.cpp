@@ -12,6 +12,7 @@
 #include "support/pins_run.h"
 #include "specular/constants.h"
 #include "specular/core.h"
+#include "specular/reference.h"
 
 namespace specular {
 namespace {
@@ -145,6 +146,34 @@ TEST(Rom38, AWordOnItsFormatsLargestCodeIsKeptAndTheFirstAboveIsRefused) {
     EXPECT_NE(std::string(e.what()).find("ROM 38 word for n = " + std::to_string(above) + " is"),
               std::string::npos)
         << e.what();
+  }
+}
+
+TEST(Rom38, DeviceEnergyWordsAreOneOverTheDevicesOwnLobe) {
+  // device-energy: K(n) = 1/I(n), I(n) the integral over cos of the device's own lobe A
+  // (register 9 after pass 2, clamp). Summed here over every cos code of the core's results
+  // (from cos = 1 down, as a sum must run to round alike), each A weighed by the double
+  // reference's code interval; the word must be exactly round(2^F / I(n)). At w20 (register
+  // 9 with 16 fraction bits) the A of 1 LSB weigh enough to move a word at some n: the
+  // lobe ends at A = 0, not at 1 LSB (C++ mutant arith.cpp `a <= 0` -> `a <= 1`). The n:
+  // the eight where ending at 1 LSB moves a word (found by building both tables), and four
+  // others.
+  Config config;
+  config.widths.rom5_word_bits = 20;
+  config.widths.reg9_frac_bits = 16;
+  config.normalisation = Normalisation::device_energy;
+  const Core core(config);
+  const Formats& f = core.formats();
+  for (unsigned n : {1u, 2u, 100u, 407u, 627u, 651u, 705u, 720u, 756u, 830u, 926u, 1000u}) {
+    double integral = 0;
+    for (code_t c = f.cos.one(); c >= 0; --c) {
+      Operands in;
+      in.cos = c;
+      in.n = n;
+      const code_t a = core.run(in).reg9_pass2;
+      if (a > 0) integral += f.reg9.to_real(a) * reference::code_interval_integral(c, f.cos.frac_bits);
+    }
+    EXPECT_EQ(core.rom38().k(n), std::llround(std::ldexp(1.0 / integral, f.rom38.frac_bits))) << "n = " << n;
   }
 }
 

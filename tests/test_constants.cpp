@@ -177,6 +177,34 @@ TEST(Rom38, DeviceEnergyWordsAreOneOverTheDevicesOwnLobe) {
   }
 }
 
+TEST(LiteralSaturation, AProductOnMultiplier39sMinimumFitsAndTheFirstBelowIsRefused) {
+  // Under `literal` the lowest K·A, (a − h·log2(a + n·F))·K(n) at cos code 0, must stay
+  // inside multiplier 39's format. With normalisation none (K = 1), patent constants
+  // (a = 1, h = ½) and 3 cos fraction bits, 1 + 3n = 64 at n = 21 puts it exactly on
+  // S1.F's minimum −2: it fits; the refusal must name the first n below it (C++ mutant
+  // arith.cpp `lowest < min` -> `<=`).
+  unsigned on_minimum = 0, below = 0;
+  for (unsigned n = 1; n <= 1000 && below == 0; ++n) {
+    const double lowest = 1.0 - 0.5 * std::log2(1.0 + 3.0 * n);
+    if (lowest == -2.0 && on_minimum == 0) on_minimum = n;
+    if (lowest < -2.0) below = n;
+  }
+  ASSERT_EQ(on_minimum, 21u);
+  ASSERT_GT(below, on_minimum);
+  Config config;
+  config.widths.cos_frac_bits = 3;
+  config.widths.norm_int_bits = 1;
+  config.normalisation = Normalisation::none;
+  config.saturation = Saturation::literal;
+  try {
+    Core core(config);
+    FAIL() << "S1 cannot hold K·A at n = " << below;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(" at n = " + std::to_string(below) + ","), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(PatentConstants, BitIdenticalToTheDeviceBeforePin19AndRom38Grew) {
   // Today's device: pin 19 U10.8, ROM 38 U9.16. Before issue 14: U10.1 and U8.16.
   Config before;

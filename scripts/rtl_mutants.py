@@ -11,8 +11,18 @@ to shared free inputs and the ROM addresses compared as outputs, so a proof hold
 ROM contents): proven equivalent, or a survivor to triage.
 
   rtl_mutants.py run --target T [--count N] [--seed S] [--shard I/N] [--partial F] [--out DIR]
-  rtl_mutants.py merge PARTIAL...        the shards of one run -> the report (exit 1 on a survivor)
+  rtl_mutants.py merge PARTIAL...        the shards of one run -> the report (exit 1 on a survivor
+                                         not argued in the triage file)
+  rtl_mutants.py report PARTIAL...       any partials together (a run and a re-run of its survivors:
+                                         a mutant given twice counts as the later partial says)
   rtl_mutants.py smoke                   CI: the unmutated round trip passes, a few mutants die
+  rtl_mutants.py check-triage            CI: every triaged mutant is still that mutant of its list
+
+A survivor argued equivalent or unreachable through the pins' contract is listed in
+scripts/rtl_mutants_triage.tsv (target, count, seed, index, the mutation, the reason) and
+counted apart, as the mutants sat proves equivalent are: the score is killed / (killed +
+survived). A mutation names cells by their source line, so an entry outlives no change
+of the RTL it argues about: check-triage then fails and the survivor must be argued again.
 
 The list of mutants is Yosys's (`mutate -list N -seed S`): the same N and seed give the
 same mutants, so shards split it by index (i mod N = I) and merge back into the run.
@@ -42,6 +52,7 @@ CONSTANTS = ["patent", "minimax-half", "minimax"]
 NORMALISATIONS = ["patent", "energy", "none", "device-energy"]
 # Every combination the Icarus tests replay; the first is tried first (most mutants die there).
 COMBINATIONS = [(c, n, s) for s in ("clamp", "literal") for c in CONSTANTS for n in NORMALISATIONS]
+TRIAGE = os.path.join(ROOT, "scripts", "rtl_mutants_triage.tsv")
 ROM_MEMORIES = {"rom5": ("ROM5_IMAGE", "mantissa_rom", 32767), "rom38": ("ROM38_IMAGE", "k_rom", 16383)}
 
 
@@ -71,6 +82,57 @@ def read_design(target):
             "hierarchy -top %s\nproc\nflatten\nopt_clean\nhierarchy -top %s\n" % (sources, target, target))
 
 
+def portable(mutation):
+    """A mutation without its -src attributes and with the sources' folder left out of its
+    cell names: the same mutant in every checkout ('$/any/where/rtl/device/rom5.v:61$20'
+    -> '$rtl/device/rom5.v:61$20')."""
+    return re.sub(r"\$/\S*?/rtl/", "$rtl/", mutation.split(" -src ")[0])
+
+
+def triage():
+    """scripts/rtl_mutants_triage.tsv: {(target, count, seed, index): (mutation, reason)}."""
+    entries = {}
+    for number, line in enumerate(open(TRIAGE), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        fields = line.rstrip("\n").split("\t")
+        if len(fields) != 6:
+            die("%s line %d: %d fields, not 6 (target, count, seed, index, mutation, reason)"
+                % (TRIAGE, number, len(fields)))
+        target, count, seed, index, mutation, reason = fields
+        entries[(target, int(count), int(seed), int(index))] = (mutation, reason)
+    return entries
+
+
+def check_triage():
+    """Every triaged mutant is still, at its index, the mutation it argues about, with a reason."""
+    entries = triage()
+    status = 0
+    work = tempfile.mkdtemp(prefix="rtl_mutants_triage_")
+    try:
+        lists = {}
+        for (target, count, seed, index), (mutation, reason) in sorted(entries.items()):
+            if target not in TARGETS:
+                print("rtl_mutants.py: triage: '%s' is not one of: %s" % (target, ", ".join(TARGETS)), file=sys.stderr)
+                status = 1
+                continue
+            if (target, count, seed) not in lists:
+                lists[(target, count, seed)] = [portable(m) for m in list_mutants(target, count, seed, work)]
+            mutants = lists[(target, count, seed)]
+            if index >= len(mutants) or mutants[index] != mutation:
+                print("rtl_mutants.py: triage: %s mutant %d of (count %d, seed %d) is no longer '%s'"
+                      % (target, index, count, seed, mutation), file=sys.stderr)
+                status = 1
+            if not reason.strip():
+                print("rtl_mutants.py: triage: %s mutant %d has no reason" % (target, index), file=sys.stderr)
+                status = 1
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    if status == 0:
+        print("rtl_mutants.py: every one of %d triaged mutants is still its mutation, with a reason" % len(entries))
+    return status
+
+
 def list_mutants(target, count, seed, work):
     out = os.path.join(work, "list.ys")
     yosys(read_design(target) + "mutate -list %d -seed %d -o %s\n" % (count, seed, out), work)
@@ -95,8 +157,12 @@ def parameter_block(target):
 def write_mutant(target, mutation, work):
     """The flattened target with one mutation (None: unmutated), as Verilog for Icarus."""
     path = os.path.join(work, target + "_mutant.v")
+    # opt_expr + opt_dff: a flip-flop whose asynchronous set or reset the mutant made
+    # constant is a constant in Yosys's semantics (and in silicon), but write_verilog's
+    # `always @(posedge SET ...)` never sees a constant rise, and Icarus would simulate the
+    # original flip-flop. Folding it first keeps the written Verilog faithful.
     yosys(read_design(target) + (mutation + "\n" if mutation else "") +
-          "opt_clean\nwrite_verilog -noattr %s\n" % path, work)
+          "opt_clean\nopt_expr\nopt_dff\nopt_clean\nwrite_verilog -noattr %s\n" % path, work)
     text = open(path).read()
     shutil.copyfile(path, path[:-2] + "_raw.v")
     text = re.sub(r"(module %s\(.*?\);\n)" % target, lambda m: m.group(1) + parameter_block(target),
@@ -250,21 +316,36 @@ def parse_shard(text):
 
 
 def report(partials):
-    """The summary of a complete set of partials; exit 1 when a mutant survived."""
+    """The summary of partials (a mutant given twice counts as the later partial says); a
+    survivor argued in the triage file counts as argued, apart. Exit 1 when a mutant
+    survived unargued."""
+    argued = triage()
     by_target = {}
     for p in partials:
-        by_target.setdefault(p["settings"]["target"], []).extend(p["results"])
+        settings = p["settings"]
+        results = by_target.setdefault(settings["target"], {})
+        for r in p["results"]:
+            r = dict(r)
+            key = (settings["target"], settings["count"], settings["seed"], r["index"])
+            if r["verdict"] == "survived" and key in argued:
+                if argued[key][0] != portable(r["mutation"]):
+                    die("triage: %s mutant %d is '%s' in the run but '%s' in %s" % (
+                        key[0], key[3], portable(r["mutation"]), argued[key][0], TRIAGE))
+                r.update(verdict="argued", detail=argued[key][1])
+            results[(settings["count"], settings["seed"], r["index"])] = r
     status = 0
-    for target, results in sorted(by_target.items()):
+    for target, keyed in sorted(by_target.items()):
+        results = [keyed[k] for k in sorted(keyed)]
         counts = {v: sum(1 for r in results if r["verdict"] == v)
-                  for v in ("killed", "equivalent", "survived", "invalid")}
+                  for v in ("killed", "equivalent", "argued", "survived", "invalid")}
         non_equivalent = counts["killed"] + counts["survived"]
         score = 100.0 * counts["killed"] / non_equivalent if non_equivalent else 100.0
-        print("%s: %d mutants: %d killed, %d equivalent (proven), %d survived, %d invalid; "
-              "score %.1f %% of the non-equivalent" % (target, len(results), counts["killed"],
-              counts["equivalent"], counts["survived"], counts["invalid"], score))
+        print("%s: %d mutants: %d killed, %d equivalent (proven), %d argued equivalent or unreachable "
+              "(%s), %d survived, %d invalid; score %.1f %% of the non-equivalent"
+              % (target, len(results), counts["killed"], counts["equivalent"], counts["argued"],
+                 os.path.relpath(TRIAGE, ROOT), counts["survived"], counts["invalid"], score))
         for r in results:
-            if r["verdict"] in ("survived", "equivalent"):
+            if r["verdict"] in ("survived", "equivalent", "argued"):
                 print("  %s %d: %s (%s)" % (r["verdict"], r["index"], r["mutation"].split(" -src")[0],
                                             r.get("detail", "")))
         if counts["survived"]:
@@ -347,8 +428,11 @@ def main():
     r.add_argument("--build", default=os.path.join(ROOT, "build"))
     m = sub.add_parser("merge")
     m.add_argument("partials", nargs="+")
+    rp = sub.add_parser("report")
+    rp.add_argument("partials", nargs="+")
     s = sub.add_parser("smoke")
     s.add_argument("--build", default=os.path.join(ROOT, "build"))
+    sub.add_parser("check-triage")
     args = parser.parse_args()
     if args.command == "run":
         if args.count < 1:
@@ -356,6 +440,10 @@ def main():
         sys.exit(run(args))
     if args.command == "merge":
         sys.exit(merge(args.partials))
+    if args.command == "report":
+        sys.exit(report([json.load(open(f)) for f in args.partials]))
+    if args.command == "check-triage":
+        sys.exit(check_triage())
     sys.exit(smoke(args))
 
 

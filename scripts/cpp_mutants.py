@@ -12,6 +12,8 @@ is not counted. The file is restored after every mutant (and on an interrupt).
 
   cpp_mutants.py list                              every mutant: id, file:line, change
   cpp_mutants.py run [--sample K --seed S] [--ids A,B] [--shard I/N] [--partial F] [--build DIR]
+                     [--tests EXE,...]             (survivors again under a sanitizer build: run it
+                                                   through scripts/sanitizer_env.sh)
   cpp_mutants.py merge PARTIAL...                  shards -> per-file scores (exit 1 below --goal)
   cpp_mutants.py report PARTIAL...                 the scores of any partials together (strata, samples;
                                                    a mutant given twice counts as the later partial says)
@@ -307,7 +309,18 @@ def run(args):
         sys.exit(128 + signum)
     signal.signal(signal.SIGTERM, interrupted)
     signal.signal(signal.SIGINT, interrupted)
-    all_targets = sorted({t for _, ts in FILES for t in ts})
+    if args.tests:  # a re-run in a sanitizer build: only these executables of each file's list
+        unknown = sorted(set(args.tests) - {t for _, ts in FILES for t in ts})
+        if unknown:
+            die("--tests: %s not among the mutated files' test executables" % ", ".join(unknown))
+        tests = lambda rel: [t for t in tests_of(rel) if t in args.tests]
+        untested = sorted({m["file"] for m in chosen if not tests(m["file"])})
+        if untested:
+            die("--tests: no executable of %s's list among them: its mutants would survive untested"
+                % ", ".join(untested))
+    else:
+        tests = tests_of
+    all_targets = sorted({t for rel, _ in FILES for t in tests(rel)})
     # Configure again first: a test file added since the last configure is a target the
     # generated build files do not know yet (a build of it by name fails before the glob
     # is looked at again).
@@ -316,7 +329,7 @@ def run(args):
         die("the unmutated tree does not build (see %s)" % log, 1)
     # The unmutated tests must pass, or a failure would "kill" every mutant.
     for rel in sorted({m["file"] for m in chosen}):
-        failure = run_tests(build, tests_of(rel), args.timeout, args.jobs)
+        failure = run_tests(build, tests(rel), args.timeout, args.jobs)
         if failure:
             die("the unmutated tree fails %s: a mutant cannot be judged by it" % failure, 1)
     results = []
@@ -333,10 +346,10 @@ def run(args):
             entry = {k: m[k] for k in ("id", "file", "line", "change")}
             entry["original"] = m["original"].strip()
             entry["mutated"] = m["new"].strip()
-            if not build_targets(build, tests_of(m["file"]), log):
+            if not build_targets(build, tests(m["file"]), log):
                 entry["verdict"] = "uncompilable"
             else:
-                failure = run_tests(build, tests_of(m["file"]), args.timeout, args.jobs)
+                failure = run_tests(build, tests(m["file"]), args.timeout, args.jobs)
                 entry["verdict"] = "killed" if failure else "survived"
                 if failure:
                     entry["by"] = failure
@@ -456,6 +469,8 @@ def main():
     r.add_argument("--sample", type=int, default=0, help="a seeded random sample of K mutants (0: all)")
     r.add_argument("--seed", type=int, default=37)
     r.add_argument("--ids", type=lambda t: [int(x) for x in t.split(",")])
+    r.add_argument("--tests", type=lambda t: t.split(","),
+                   help="only these test executables (e.g. survivors again in a sanitizer build)")
     r.add_argument("--files", help="only the mutants of files whose path starts with this (a stratum)")
     r.add_argument("--shard")
     r.add_argument("--partial")

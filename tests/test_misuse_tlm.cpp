@@ -469,6 +469,20 @@ TEST(MisuseTlmConstruction, ARom38FormatWiderThanItsRegisterIsRefusedNamingIt) {
   }
 }
 
+TEST(MisuseTlmConstruction, ANorm39FormatWiderThanItsRegisterIsRefusedNamingIt) {
+  // Multiplier 39's output S10.22: 1 + 10 + 22 = 33 bits, one more than NORM39 holds.
+  Config config;
+  config.widths.norm_frac_bits = 22;
+  try {
+    SpecularLtTarget target("target", config);
+    FAIL() << "a 33-bit NORM39 format was accepted";
+  } catch (const std::invalid_argument& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("NORM39 format"), std::string::npos) << what;
+    EXPECT_NE(what.find("is 33 bits wide"), std::string::npos) << what;
+  }
+}
+
 TEST(MisuseTlmConstruction, AClockPeriodOfZeroIsRefusedNamingIt) {
   try {
     SpecularLtTarget target("target", Config{}, sc_core::SC_ZERO_TIME);

@@ -323,6 +323,23 @@ TEST(TargetReports, ARefusedIgnoreCommandIsReportedAsIgnore) {
   EXPECT_NE(reports[0].find("decodes offsets below 0x8000"), std::string::npos) << reports[0];
 }
 
+// done_irq follows STATUS.done, 0 out of reset (docs/tlm.md's map): a platform line that
+// starts high is driven low before any operation, not left high until the first one ends.
+struct SilentInitiator : sc_core::sc_module {  // bound to the target, sends nothing
+  tlm_utils::simple_initiator_socket<SilentInitiator> socket{"socket"};
+  explicit SilentInitiator(sc_core::sc_module_name name) : sc_module(name) {}
+};
+
+TEST(TargetInterrupt, ALineThatStartsHighIsLowOutOfReset) {
+  SpecularLtTarget target("target", Config{});
+  SilentInitiator bus("bus");
+  bus.socket.bind(target.socket);
+  sc_core::sc_signal<bool> irq("irq", true);
+  target.done_irq(irq);
+  sc_core::sc_start(sc_core::sc_time(1, sc_core::SC_NS));
+  EXPECT_FALSE(irq.read());
+}
+
 // A byte-enable array longer than the data: IEEE 1666 applies it byte for byte, so only
 // its first data-length entries count (a mutant that also read the entry past the data
 // survived every other test). Bytes 0-3 enabled, 4-7 disabled: the 4-byte write is whole.

@@ -44,6 +44,14 @@ set(powers_of_two 0.000030517578125 0.00006103515625 0.0001220703125 0.000244140
 foreach(cos IN LISTS powers_of_two)
   string(APPEND stimulus "${cos},5,9,99,199\n")
 endforeach()
+# And one where register 9 after pass 1, 1 + n*k for cos = 2^-k under the patent's
+# constants (a = 1; ROM 5 is exact at a power of two), is itself a power of two 2^m, for
+# every m that some n <= 1000 and k <= 16 reach: ROM 5 then reads a single set bit at
+# each position 23-32 and 34 of its bus in pass 2 (n*k = 2^m - 1).
+foreach(operands "0.5,1" "0.5,3" "0.5,7" "0.5,15" "0.5,31" "0.5,63" "0.5,127" "0.5,255" "0.5,511"
+                 "0.125,341" "0.03125,819")
+  string(APPEND stimulus "${operands},9,99,199\n")
+endforeach()
 file(WRITE ${SCRATCH}/stimulus.csv "${stimulus}")
 
 # A different random draw per combination.

@@ -419,5 +419,37 @@ TEST(TargetWindows, DebugIgnoreMovesNothingAndSubWordReadsFindTheirWord) {
   EXPECT_NE(reports[0].find("BATCH_COS = 0x11170 (70000)"), std::string::npos) << reports[0];
 }
 
+// A batch that ends at BATCH_COS's last word (1022 and 1023): its results fill BATCH_OUT to
+// its last word, and OUT_R..OUT_B hold the batch's last operation. Bit-identical to the
+// core. Under the sanitizer job this also stops a read past BATCH_OUT's end.
+TEST(TargetWindows, ABatchEndingAtTheWindowsLastWordFillsBatchOutToItsEnd) {
+  const Operands op{0, 40, {200, 100, 50}};
+  const std::uint32_t cos[2] = {64000, 65000};
+  const Result first = Core().run(Operands{cos[0], op.n, op.rgb});
+  const Result last = Core().run(Operands{cos[1], op.n, op.rgb});
+  tlm::tlm_response_status response = tlm::TLM_INCOMPLETE_RESPONSE;
+  std::uint32_t tail[6] = {};
+  std::uint32_t out[3] = {};
+  LtBench bench("bench", [&](LtBench& b) {
+    for (auto [reg, value] : {std::pair{Reg::n, op.n}, {Reg::r, op.rgb[0]}, {Reg::g, op.rgb[1]},
+                              {Reg::b, op.rgb[2]}}) {
+      std::uint32_t word = static_cast<std::uint32_t>(value);
+      transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(reg), &word, 4);
+    }
+    std::uint32_t batch[2] = {cos[0], cos[1]};
+    response = transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos) + 4 * (batch_capacity - 2),
+                         batch, 8);
+    transport(b.socket, tlm::TLM_READ_COMMAND, offset_of(Reg::batch_out) + 4 * 3 * (batch_capacity - 2), tail, 24);
+    transport(b.socket, tlm::TLM_READ_COMMAND, offset_of(Reg::results), out, 12);
+  });
+  sc_core::sc_start();
+  ASSERT_EQ(response, tlm::TLM_OK_RESPONSE);
+  for (int ch = 0; ch < 3; ++ch) {
+    EXPECT_EQ(tail[ch], static_cast<std::uint32_t>(first.out[ch])) << "operation 1022, channel " << ch;
+    EXPECT_EQ(tail[3 + ch], static_cast<std::uint32_t>(last.out[ch])) << "operation 1023, channel " << ch;
+    EXPECT_EQ(out[ch], static_cast<std::uint32_t>(last.out[ch])) << "RESULTS word " << ch;
+  }
+}
+
 }  // namespace
 }  // namespace specular

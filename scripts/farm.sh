@@ -216,7 +216,9 @@ run_task() {  # run_task DIR ID
   /usr/bin/time -f '%e %U %S' -o "$dir/status/$id.time" \
     "${tool[@]}" $args --partial "$partial" >>"$log" 2>&1 || status=$?
   ended=$(date +%s.%N)
-  read -r wall user sys <"$dir/status/$id.time" 2>/dev/null || { wall=0 user=0 sys=0; }
+  # The figures are the time file's last line: GNU time writes "Command exited with
+  # non-zero status N" above them when the task fails.
+  read -r wall user sys < <(tail -n1 "$dir/status/$id.time" 2>/dev/null) || { wall=0 user=0 sys=0; }
   printf '{"id": %s, "group": "%s", "exit": %d, "wall_seconds": %s, "cpu_seconds": %s, "started": %s, "ended": %s, "host": "%s", "log": "%s"}\n' \
     "$id" "$group" "$status" "$wall" "$(awk -v u="$user" -v s="$sys" 'BEGIN {printf "%.2f", u + s}')" "$started" "$ended" "$(hostname)" "logs/task-$id.log" \
     >"$dir/status/$id.json"

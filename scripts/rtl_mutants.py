@@ -11,6 +11,8 @@ to shared free inputs and the ROM addresses compared as outputs, so a proof hold
 ROM contents): proven equivalent, or a survivor to triage.
 
   rtl_mutants.py run --target T [--count N] [--seed S] [--shard I/N] [--partial F] [--out DIR]
+                                         (exit 1 on an unargued survivor, or 0 once --partial's
+                                         file is written: the merge judges a farm task's shard)
   rtl_mutants.py merge PARTIAL...        the shards of one run -> the report (exit 1 on a survivor
                                          not argued in the triage file)
   rtl_mutants.py report PARTIAL...       any partials together (a run and a re-run of its survivors:
@@ -297,7 +299,10 @@ def run(args):
                "shard": {"index": index, "count": count}, "results": results}
     if args.partial:
         json.dump(partial, open(args.partial, "w"), indent=1)
-    return report([partial])
+    status = report([partial])
+    # A farm task (--partial) has done its part when the partial is written: the merge of
+    # every shard judges the survivors, and a failing task would keep the merge from running.
+    return 0 if args.partial else status
 
 
 def commit():

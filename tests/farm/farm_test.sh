@@ -119,4 +119,13 @@ cat "$scratch/resubmit.err"
 grep -q "task(s) $last again" "$scratch/resubmit.err" || fail "resubmit did not run exactly task $last"
 if [[ $executor == slurm ]]; then "$farm" wait "$scratch/run2" || fail "the resubmitted run failed"; fi
 check_merged "$scratch/run2"
+
+# 3. A task whose tool fails (a bad option): its status is still valid JSON, with the
+#    tool's exit status and numeric times (GNU time writes a line above them then).
+cp -r "$scratch/run1" "$scratch/run3"
+awk -F'\t' -v OFS='\t' -v id="$last" '$1 == id {$4 = $4 " --no-such-option"} 1' \
+  "$scratch/run1/tasks.tsv" >"$scratch/run3/tasks.tsv"
+if "$farm" task "$scratch/run3" "$last" 2>/dev/null; then fail "task $last passed with a bad option"; fi
+jq -e '.exit != 0 and (.wall_seconds | type) == "number" and (.cpu_seconds | type) == "number"' \
+  "$scratch/run3/status/$last.json" >/dev/null || fail "a failed task's status is not valid JSON with its exit and times"
 echo "farm_test.sh: PASS"

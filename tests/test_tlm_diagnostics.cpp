@@ -451,5 +451,27 @@ TEST(TargetWindows, ABatchEndingAtTheWindowsLastWordFillsBatchOutToItsEnd) {
   }
 }
 
+// A byte written to STATUS replaces that byte and W1C sees zeros elsewhere (docs/tlm.md):
+// writing 0 to the cause byte (byte 1) after an operation leaves done (bit 1 of byte 0) set.
+TEST(TargetSubWord, AByteWrittenToStatusClearsNothingInItsOtherBytes) {
+  std::uint32_t before = 0, after = 0;
+  LtBench bench("bench", [&](LtBench& b) {
+    for (auto [reg, value] : {std::pair{Reg::n, 40u}, {Reg::r, 200u}, {Reg::g, 100u}, {Reg::b, 50u},
+                              {Reg::cos, 60000u}}) {
+      std::uint32_t word = value;
+      transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(reg), &word, 4);
+    }
+    std::uint32_t word = control_bits::start;
+    transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(Reg::control), &word, 4);
+    transport(b.socket, tlm::TLM_READ_COMMAND, offset_of(Reg::status), &before, 4);
+    std::uint8_t zero = 0;
+    transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(Reg::status) + 1, &zero, 1);
+    transport(b.socket, tlm::TLM_READ_COMMAND, offset_of(Reg::status), &after, 4);
+  });
+  sc_core::sc_start();
+  ASSERT_NE(before & status_bits::done, 0u) << "the operation must have ended";
+  EXPECT_NE(after & status_bits::done, 0u) << "STATUS.done cleared by a write to byte 1";
+}
+
 }  // namespace
 }  // namespace specular

@@ -226,6 +226,7 @@ TEST(TargetBusyGuard, AWriteWhileAnOperationRunsIsRefusedAsBusy) {
   static_assert(offset_of(Reg::control) % 8 == 0 &&
                 offset_of(Reg::batch_capacity) == offset_of(Reg::control) + 4);
   std::vector<Refusal> refusals;
+  std::vector<tlm::tlm_response_status> clears;  // STATUS's W1C is no operand write: never busy
   std::uint32_t busy_status = 0, after[5] = {};
   const auto refused = [&](TwoMasters& m, const std::string& what, std::uint64_t address,
                            const std::vector<std::uint32_t>& words) {
@@ -233,7 +234,7 @@ TEST(TargetBusyGuard, AWriteWhileAnOperationRunsIsRefusedAsBusy) {
     const tlm::tlm_response_status response =
         m.access(tlm::TLM_WRITE_COMMAND, address, data.data(), static_cast<unsigned>(4 * data.size()));
     refusals.push_back({what, response, m.read(Reg::status), m.read(Reg::error_address)});
-    m.write(offset_of(Reg::status), status_bits::error);  // clear, so the next is seen alone
+    clears.push_back(m.write(offset_of(Reg::status), status_bits::error));  // clear, so the next is seen alone
   };
   TwoMasters masters(
       "masters",
@@ -270,6 +271,9 @@ TEST(TargetBusyGuard, AWriteWhileAnOperationRunsIsRefusedAsBusy) {
     EXPECT_EQ(f.status & status_bits::cause_mask, busy_cause) << f.what;
     EXPECT_EQ(f.error_address, addresses[k]) << f.what;
   }
+  ASSERT_EQ(clears.size(), 6u);
+  for (tlm::tlm_response_status clear : clears)
+    EXPECT_EQ(clear, tlm::TLM_OK_RESPONSE) << "writing STATUS (W1C) during the operation (docs/tlm.md cause 6)";
   // Nothing the second master wrote reached the operand registers.
   const std::uint32_t written[5] = {cos, n, r, g, b};
   for (int k = 0; k < 5; ++k) EXPECT_EQ(after[k], written[k]) << "operand register " << k;

@@ -252,6 +252,8 @@ TEST(TargetBusyGuard, AWriteWhileAnOperationRunsIsRefusedAsBusy) {
         refused(m, "BATCH_COS", offset_of(Reg::batch_cos), {1000, 2000});
         refused(m, "8 bytes: COS, N", offset_of(Reg::cos), {cos, n});
         refused(m, "8 bytes: CONTROL, BATCH_CAPACITY", offset_of(Reg::control), {control_bits::start, 0});
+        // CONTROL without START is no action, so not busy: the read-only word refuses it.
+        refused(m, "8 bytes: CONTROL 0, BATCH_CAPACITY", offset_of(Reg::control), {0, 0});
         sc_core::wait(sc_time(100, SC_NS));  // long after the operation
         int i = 0;
         for (Reg reg : {Reg::cos, Reg::n, Reg::r, Reg::g, Reg::b}) after[i++] = m.read(reg);
@@ -260,18 +262,21 @@ TEST(TargetBusyGuard, AWriteWhileAnOperationRunsIsRefusedAsBusy) {
 
   EXPECT_TRUE(busy_status & status_bits::busy) << "the operation runs while the second master looks";
   const std::uint32_t busy_cause = static_cast<std::uint32_t>(ErrorCause::busy) << status_bits::cause_shift;
+  const std::uint32_t read_only_cause = static_cast<std::uint32_t>(ErrorCause::read_only)
+                                        << status_bits::cause_shift;
   const std::uint64_t addresses[] = {offset_of(Reg::control), offset_of(Reg::n), offset_of(Reg::operands),
                                      offset_of(Reg::batch_cos), offset_of(Reg::cos),
-                                     offset_of(Reg::control)};
-  ASSERT_EQ(refusals.size(), 6u);
+                                     offset_of(Reg::control), offset_of(Reg::batch_capacity)};
+  ASSERT_EQ(refusals.size(), 7u);
   for (std::size_t k = 0; k < refusals.size(); ++k) {
     const Refusal& f = refusals[k];
-    EXPECT_EQ(f.response, tlm::TLM_GENERIC_ERROR_RESPONSE) << f.what;
+    const bool busy = k < 6;
+    EXPECT_EQ(f.response, busy ? tlm::TLM_GENERIC_ERROR_RESPONSE : tlm::TLM_COMMAND_ERROR_RESPONSE) << f.what;
     EXPECT_TRUE(f.status & status_bits::error) << f.what;
-    EXPECT_EQ(f.status & status_bits::cause_mask, busy_cause) << f.what;
+    EXPECT_EQ(f.status & status_bits::cause_mask, busy ? busy_cause : read_only_cause) << f.what;
     EXPECT_EQ(f.error_address, addresses[k]) << f.what;
   }
-  ASSERT_EQ(clears.size(), 6u);
+  ASSERT_EQ(clears.size(), 7u);
   for (tlm::tlm_response_status clear : clears)
     EXPECT_EQ(clear, tlm::TLM_OK_RESPONSE) << "writing STATUS (W1C) during the operation (docs/tlm.md cause 6)";
   // Nothing the second master wrote reached the operand registers.

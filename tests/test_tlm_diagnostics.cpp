@@ -462,6 +462,29 @@ TEST(TargetWindows, ABatchEndingAtTheWindowsLastWordFillsBatchOutToItsEnd) {
   }
 }
 
+// Every word of a batch is checked before any runs, the first as much as the others: a
+// batch whose word 0 is above 1.0 (65536 for U1.16) is refused whole, naming that word.
+TEST(TargetWindows, ABatchWhoseFirstWordIsAboveOneIsRefusedWhole) {
+  static std::vector<std::string> reports;
+  sc_core::sc_report_handler::set_handler(
+      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
+        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
+          reports.push_back(report.get_msg());
+      });
+  tlm::tlm_response_status response = tlm::TLM_OK_RESPONSE;
+  std::uint32_t error_address = 0;
+  LtBench bench("bench", [&](LtBench& b) {
+    std::uint32_t batch[2] = {70000, 1000};
+    response = transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(Reg::batch_cos), batch, 8);
+    transport(b.socket, tlm::TLM_READ_COMMAND, offset_of(Reg::error_address), &error_address, 4);
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(response, tlm::TLM_GENERIC_ERROR_RESPONSE);
+  EXPECT_EQ(error_address, offset_of(Reg::batch_cos));
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_NE(reports[0].find("BATCH_COS = 0x11170 (70000)"), std::string::npos) << reports[0];
+}
+
 // A byte written to STATUS replaces that byte and W1C sees zeros elsewhere (docs/tlm.md):
 // writing 0 to the cause byte (byte 1) after an operation leaves done (bit 1 of byte 0) set.
 TEST(TargetSubWord, AByteWrittenToStatusClearsNothingInItsOtherBytes) {

@@ -485,6 +485,26 @@ TEST(TargetWindows, ABatchWhoseFirstWordIsAboveOneIsRefusedWhole) {
   EXPECT_NE(reports[0].find("BATCH_COS = 0x11170 (70000)"), std::string::npos) << reports[0];
 }
 
+// The report of a refused OPERANDS burst names the refused word's own value, not another
+// word's: N = 2000 (word 1 of COS, N, R, G, B, CONTROL) is outside 1..1000.
+TEST(TargetWindows, ARefusedOperandsWordIsReportedWithItsOwnValue) {
+  static std::vector<std::string> reports;
+  sc_core::sc_report_handler::set_handler(
+      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
+        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
+          reports.push_back(report.get_msg());
+      });
+  tlm::tlm_response_status response = tlm::TLM_OK_RESPONSE;
+  LtBench bench("bench", [&](LtBench& b) {
+    std::uint32_t operands[6] = {1000, 2000, 1, 2, 3, 0};
+    response = transport(b.socket, tlm::TLM_WRITE_COMMAND, offset_of(Reg::operands), operands, 24);
+  });
+  sc_core::sc_start();
+  EXPECT_EQ(response, tlm::TLM_GENERIC_ERROR_RESPONSE);
+  ASSERT_EQ(reports.size(), 1u);
+  EXPECT_NE(reports[0].find("N = 0x7d0 (2000)"), std::string::npos) << reports[0];
+}
+
 // A byte written to STATUS replaces that byte and W1C sees zeros elsewhere (docs/tlm.md):
 // writing 0 to the cause byte (byte 1) after an operation leaves done (bit 1 of byte 0) set.
 TEST(TargetSubWord, AByteWrittenToStatusClearsNothingInItsOtherBytes) {

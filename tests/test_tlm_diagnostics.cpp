@@ -61,6 +61,18 @@ tlm::tlm_response_status transport(Socket& socket, tlm::tlm_command command, std
   return tx.get_response_status();
 }
 
+/// The messages of the target's refusal reports (/specular/tlm/access-refused), collected
+/// instead of printed: one test per process, so one handler per process.
+const std::vector<std::string>& capture_refusal_reports() {
+  static std::vector<std::string> reports;
+  sc_core::sc_report_handler::set_handler(
+      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
+        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
+          reports.push_back(report.get_msg());
+      });
+  return reports;
+}
+
 TEST(ResponseName, NamesEveryStatusAsTheStandardSpellsIt) {
   EXPECT_STREQ(response_name(tlm::TLM_OK_RESPONSE), "TLM_OK_RESPONSE");
   EXPECT_STREQ(response_name(tlm::TLM_INCOMPLETE_RESPONSE), "TLM_INCOMPLETE_RESPONSE");
@@ -304,12 +316,7 @@ class LtBench : public sc_core::sc_module {
 };
 
 TEST(TargetReports, ARefusedIgnoreCommandIsReportedAsIgnore) {
-  static std::vector<std::string> reports;
-  sc_core::sc_report_handler::set_handler(
-      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
-        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
-          reports.push_back(report.get_msg());
-      });
+  const std::vector<std::string>& reports = capture_refusal_reports();
   constexpr std::uint64_t hole = map_size;  // the first offset beyond the map
   tlm::tlm_response_status response = tlm::TLM_OK_RESPONSE;
   LtBench bench("bench", [&](LtBench& b) {
@@ -375,12 +382,7 @@ TEST(TargetByteEnables, AnArrayLongerThanTheDataCountsOnlyAsFarAsTheData) {
 //   first operation's G, + 12 the second's R), the bytes of the host's word;
 // - the report of a refused BATCH_COS word names that word's value, not another's.
 TEST(TargetWindows, DebugIgnoreMovesNothingAndSubWordReadsFindTheirWord) {
-  static std::vector<std::string> reports;
-  sc_core::sc_report_handler::set_handler(
-      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
-        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
-          reports.push_back(report.get_msg());
-      });
+  const std::vector<std::string>& reports = capture_refusal_reports();
   const Operands op{50000, 40, {200, 100, 50}};
   const Result first = Core().run(Operands{64000, op.n, op.rgb});
   const Result second = Core().run(Operands{65000, op.n, op.rgb});
@@ -465,12 +467,7 @@ TEST(TargetWindows, ABatchEndingAtTheWindowsLastWordFillsBatchOutToItsEnd) {
 // Every word of a batch is checked before any runs, the first as much as the others: a
 // batch whose word 0 is above 1.0 (65536 for U1.16) is refused whole, naming that word.
 TEST(TargetWindows, ABatchWhoseFirstWordIsAboveOneIsRefusedWhole) {
-  static std::vector<std::string> reports;
-  sc_core::sc_report_handler::set_handler(
-      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
-        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
-          reports.push_back(report.get_msg());
-      });
+  const std::vector<std::string>& reports = capture_refusal_reports();
   tlm::tlm_response_status response = tlm::TLM_OK_RESPONSE;
   std::uint32_t error_address = 0;
   LtBench bench("bench", [&](LtBench& b) {
@@ -488,12 +485,7 @@ TEST(TargetWindows, ABatchWhoseFirstWordIsAboveOneIsRefusedWhole) {
 // The report of a refused OPERANDS burst names the refused word's own value, not another
 // word's: N = 2000 (word 1 of COS, N, R, G, B, CONTROL) is outside 1..1000.
 TEST(TargetWindows, ARefusedOperandsWordIsReportedWithItsOwnValue) {
-  static std::vector<std::string> reports;
-  sc_core::sc_report_handler::set_handler(
-      [](const sc_core::sc_report& report, const sc_core::sc_actions&) {
-        if (std::string(report.get_msg_type()) == report::tlm_access_refused)
-          reports.push_back(report.get_msg());
-      });
+  const std::vector<std::string>& reports = capture_refusal_reports();
   tlm::tlm_response_status response = tlm::TLM_OK_RESPONSE;
   LtBench bench("bench", [&](LtBench& b) {
     std::uint32_t operands[6] = {1000, 2000, 1, 2, 3, 0};

@@ -13,11 +13,15 @@
 #                       default: run silicon.sh --no-gatesim into OUT_DIR/silicon first
 #   --period NS         the replays' clock period, the common clock (default 50)
 #   --t-sim NS          the design's own T_sim (default: t_sim_ns of DIR's
-#                       silicon_summary.json, if any): leakage also given at T_sim
+#                       silicon_summary.json, else the top's row of energy_streams.tsv):
+#                       leakage also given at T_sim
 #   --clocks-per-result C  for the figure at T_sim (default: the summary's streamed value)
-#   --groups N --random N  the vectors (device tops: gatesim.sh's groups of 10 and random
-#                       operations, default 8 and 200: the 280 of the gate-level
-#                       regression; a variant: 18 edge cases + N random, default 262)
+#   --random N          random operations of the common stream after its 18 edge cases
+#                       (0-5000; default: the top's row of scripts/silicon/energy_streams.tsv,
+#                       long enough for a 1 % standard error, else 262). Every design
+#                       replays the same operands: specular_variant_vectors NAME --count
+#                       18+N --seed 1 (a device top through its own testbench, gatesim.sh
+#                       --stimulus, with the patent's policy and no reset mid-operation)
 #   --vectors-tool PATH, --specular-tb PATH  as gatesim.sh
 #   --keep-vcd          keep the two VCDs (deleted after counting by default: up to GBs)
 #   --no-zero-delay     skip the zero-delay replay (no glitch share)
@@ -38,7 +42,6 @@ netlist_dir=""
 period=50
 t_sim=""
 cpr=""
-groups=8
 random=""
 vectors_tool="$root/build/tools/variant_vectors/specular_variant_vectors"
 specular_tb="$root/build/testbench/specular_tb"
@@ -50,11 +53,11 @@ while [[ $# -gt 0 ]]; do
     -h|--help) usage; exit 0 ;;
     --keep-vcd) keep_vcd=1; shift ;;
     --no-zero-delay) zero=0; shift ;;
-    --top|--netlist-dir|--period|--t-sim|--clocks-per-result|--groups|--random|--vectors-tool|--specular-tb)
+    --top|--netlist-dir|--period|--t-sim|--clocks-per-result|--random|--vectors-tool|--specular-tb)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --period) period="$2" ;;
-        --t-sim) t_sim="$2" ;; --clocks-per-result) cpr="$2" ;; --groups) groups="$2" ;;
+        --t-sim) t_sim="$2" ;; --clocks-per-result) cpr="$2" ;;
         --random) random="$2" ;; --vectors-tool) vectors_tool="$2" ;; --specular-tb) specular_tb="$2" ;;
       esac
       shift 2 ;;
@@ -68,7 +71,7 @@ number='^[0-9]+([.][0-9]+)?$'
   || fail_args "--period '$period' is not a period in ns from 1 to 1000"
 [[ -z "$t_sim" ]] || { [[ "$t_sim" =~ $number ]] && (( $(echo "$t_sim > 0 && $t_sim <= 1000" | bc) )); } \
   || fail_args "--t-sim '$t_sim' is not a period in ns above 0 and at most 1000"
-[[ -z "$random" || "$random" =~ ^[0-9]+$ ]] || fail_args "--random '$random' is not a count from 0 to 2000"
+[[ -z "$random" || ( "$random" =~ ^[0-9]{1,4}$ && 10#$random -le 5000 ) ]] || fail_args "--random '$random' is not a count from 0 to 5000"
 out="${args[0]}"
 rom_dir="${args[1]:-$root/build/rtl/rom/default}"
 top_dir="$here/silicon/$top"
@@ -77,6 +80,10 @@ if [[ ! -d "$top_dir" && "$top" == specular_* && -f "$root/rtl/design_space/$top
   top_dir="$here/silicon/variant"; variant=1
 fi
 [[ -f "$top_dir/constraints.tcl" ]] || fail_args "top '$top' has no flow pieces (scripts/silicon/$top/) and is no design variant"
+[[ -x "$vectors_tool" ]] || fail_args "specular_variant_vectors not found at '$vectors_tool' (cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)"
+# the top's stream length and T_sim (scripts/silicon/energy_streams.tsv)
+read -r stream_random stream_t_sim < <(awk -v t="$top" '$1 == t { print $2, $3 }' "$here/silicon/energy_streams.tsv") || true
+[[ -n "$random" ]] || random=${stream_random:-262}
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 if [[ -z "$netlist_dir" ]]; then
@@ -92,24 +99,28 @@ summary="$netlist_dir/silicon_summary.json"
 if [[ -z "$t_sim" && -f "$summary" ]]; then
   t_sim=$(/usr/bin/python3 -c "import json,sys; v=json.load(open(sys.argv[1])).get('t_sim_ns'); print(v if v else '')" "$summary")
 fi
+[[ -n "$t_sim" ]] || t_sim=${stream_t_sim:-}
 if [[ -z "$cpr" && -f "$summary" ]]; then
   cpr=$(/usr/bin/python3 -c "import json,sys; v=json.load(open(sys.argv[1])).get('clocks_per_result_streamed'); print(v if v else '')" "$summary")
 fi
 
 # ---- the vectors and the result strobe of the top -----------------------------------
-# device tops: no operation aborted by reset (their testbench's RESET_EVERY), so that
-# every operation of the stream is a result, as in a variant's testbench
-vec_opts=(--groups "$groups" --random "${random:-200}" --tb-param RESET_EVERY=1000000)
-random_from=$((10 * groups))
+# One stream for every design: 18 edge cases and RANDOM random operands. A device top
+# takes its operands as a stimulus (its testbench's own expected values, the patent's
+# policy), with no operation aborted by reset (RESET_EVERY), so that every operation is
+# a result, as in a variant's testbench.
+random_from=18
 ENERGY_RESULTS=()
 source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top)
 [[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)"
 strobe=("${ENERGY_RESULTS[@]}")
 if [[ $variant -eq 1 ]]; then
-  vec_opts=(--random "${random:-262}")
-  random_from=18
+  vec_opts=(--random "$random")
   [[ -n "$cpr" ]] || cpr=1
 else
+  "$vectors_tool" patent --count $((18 + random)) --seed 1 --out "$out/stream.txt" > "$out/stream.log" 2>&1 \
+    || { echo "energy.sh: writing the common stream failed; see $out/stream.log" >&2; exit 1; }
+  vec_opts=(--stimulus "$out/stream.txt" --tb-param RESET_EVERY=1000000)
   [[ -n "$cpr" ]] || cpr=2
 fi
 

@@ -24,9 +24,13 @@
 #   --policies LIST     constants/normalisation/saturation triples, comma separated, or
 #                       `all` (every combination the device accepts); default
 #                       patent/patent/clamp
-#   --random N          random operations per policy after the edge-case groups (default 8)
+#   --random N          random operations per policy after the edge-case groups (default 8,
+#                       at most 5000)
 #   --groups N          edge-case groups of 10 operations with n, R, G, B unchanged (back
 #                       to back at 2 T), 1-8 (default 2)
+#   --stimulus FILE     (a device top) these operations instead of the groups and random
+#                       ones: lines `cos n r g b` in hex, specular_variant_vectors' first
+#                       five columns (scripts/energy.sh's common stream, issue 36)
 #   --specular-tb PATH  the testbench that writes the expected values (default
 #                       build/testbench/specular_tb)
 #   --shard I/N         run shard I (0-based) of N only (issue 25, docs/farm.md): a period
@@ -95,6 +99,7 @@ random_set=0
 groups_set=0
 quiet=0
 vcd=""
+stimulus=""
 zero_delay=0
 tb_params_extra=()
 shard_index=0
@@ -106,7 +111,7 @@ while [[ $# -gt 0 ]]; do
     -h|--help) usage; exit 0 ;;
     --quiet) quiet=1; shift ;;
     --zero-delay) zero_delay=1; shift ;;
-    --top|--vcd|--tb-param|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool)
+    --top|--vcd|--tb-param|--netlist-dir|--policies|--random|--groups|--specular-tb|--bisect|--hazards|--shard|--partial|--vectors-tool|--stimulus)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --policies) policies="$2" ;;
@@ -115,6 +120,7 @@ while [[ $# -gt 0 ]]; do
         --vectors-tool) vectors_tool="$2" ;;
         --partial) partial="$2" ;;
         --vcd) vcd="$2" ;;
+        --stimulus) stimulus="$2" ;;
         --tb-param) [[ "$2" =~ ^[A-Z_][A-Z0-9_]*=[0-9.]+$ ]] || fail_args "--tb-param '$2': expected NAME=NUMBER"
                     tb_params_extra+=("$2") ;;
         --shard)
@@ -148,7 +154,8 @@ else
     || fail_args "PERIOD_NS '$period' is not a period in ns from 0.1 to 1000"
   out="${args[1]}"; rom_dir="${args[2]:-$root/build/rtl/rom/default}"
 fi
-[[ "$random" =~ ^[0-9]+$ && $random -le 2000 ]] || fail_args "--random '$random' is not a count from 0 to 2000"
+[[ "$random" =~ ^[0-9]+$ && $random -le 5000 ]] || fail_args "--random '$random' is not a count from 0 to 5000"
+[[ -z "$stimulus" || -f "$stimulus" ]] || fail_args "--stimulus '$stimulus' is no file"
 [[ "$groups" =~ ^[1-8]$ ]] || fail_args "--groups '$groups' is not a count from 1 to 8"
 conf="$here/silicon/$top/gatesim.conf"
 if [[ ! -d "$here/silicon/$top" && "$top" == specular_* && -f "$root/rtl/design_space/$top.v" ]]; then
@@ -172,6 +179,7 @@ VARIANT_VECTORS=0
 source "$conf"   # TB_FILE, TB_TOP, TB_PARAMS, TB_DEFINES, VARIANT_VECTORS (per top)
 TB_PARAMS+=("${tb_params_extra[@]}")
 if [[ $VARIANT_VECTORS -eq 1 ]]; then
+  [[ -z "$stimulus" ]] || fail_args "--stimulus is for a device top; a variant's top replays its model's vectors"
   [[ -x "$vectors_tool" ]] || fail_args "specular_variant_vectors not found at '$vectors_tool' (cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)"
   [[ $random_set -eq 1 ]] || random=10
 else
@@ -220,8 +228,10 @@ if [[ $VARIANT_VECTORS -eq 1 ]]; then
     > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
   echo "variant 0 0 0 $out/vectors.txt" > "$out/policies.txt"
 else
+stimulus_args=()
+[[ -z "$stimulus" ]] || { stimulus_args=("$(cd "$(dirname "$stimulus")" && pwd)/$(basename "$stimulus")"); random=0; }
 /usr/bin/python3 "$here/silicon/gatesim_vectors.py" "$specular_tb" "$out" "$policies" "$groups" "$random" \
-  > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
+  "${stimulus_args[@]}" > "$out/vectors.log" 2>&1 || { echo "gatesim.sh: writing the vectors failed; see $out/vectors.log" >&2; exit 1; }
 fi
 # The shard's policies (a period run, --bisect): the k-th of the run's, k mod N = I.
 cp "$out/policies.txt" "$out/policies_all.txt"
@@ -464,7 +474,8 @@ first_failure=$(grep -h -m1 -E 'MISMATCH|fatal' "$out/T$lo/$first_policy.log" | 
     echo "vectors_per_policy $(( 18 + random ))"
   else
     echo "policies $policies"
-    echo "vectors_per_policy $(( groups * 10 + random ))"
+    if [[ -n "$stimulus" ]]; then echo "vectors_per_policy $(grep -c . "$stimulus")"
+    else echo "vectors_per_policy $(( groups * 10 + random ))"; fi
   fi
 } > "$out/tsim.txt"
 {

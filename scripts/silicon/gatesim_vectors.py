@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Vectors of scripts/gatesim.sh, as rtl/tb/run_icarus.cmake writes them for the RTL tests.
 
-  gatesim_vectors.py SPECULAR_TB OUT_DIR POLICIES GROUPS RANDOM
+  gatesim_vectors.py SPECULAR_TB OUT_DIR POLICIES GROUPS RANDOM [STIMULUS]
 
 POLICIES: `all` or comma-separated constants/normalisation/saturation triples. For each
 policy specular_tb writes the expected values of GROUPS groups of 10 operations (n, R, G,
@@ -9,6 +9,11 @@ B unchanged: back to back at 2 T; the cos edge cases of run_icarus.cmake) and RA
 random operations (a reload each). Writes OUT_DIR/vectors_<policy>.csv and
 OUT_DIR/policies.txt (name, constants value, normalisation value, literal, file); a
 combination the model refuses is left out, as the RTL tests skip it.
+
+STIMULUS (scripts/energy.sh's common stream, issue 36): a file of lines `cos n r g b`, cos
+register 1's code (hex U1.16), n, r, g, b hex, as specular_variant_vectors writes them
+(its first five columns): these operations, in this order, replace the groups (GROUPS is
+then unused and RANDOM must be 0), so that a device top replays a variant's operands.
 """
 import subprocess
 import sys
@@ -38,10 +43,27 @@ def main():
                 return 2
             triples.append(tuple(parts))
     stimulus = "cos,n,r,g,b\n"
-    for group in GROUPS[:groups]:
-        n, rgb = group.split(",", 1)
-        for cos in COSINES:
-            stimulus += f"{cos},{n},{rgb}\n"
+    if len(sys.argv) > 6:
+        if random != 0:
+            sys.stderr.write(f"gatesim_vectors.py: RANDOM '{random}' with a STIMULUS file: must be 0\n")
+            return 2
+        for number, line in enumerate(open(sys.argv[6]), 1):
+            fields = line.split()
+            try:
+                cos, n, r, g, b = (int(x, 16) for x in fields[:5])
+            except ValueError:
+                fields = []
+            if len(fields) < 5 or not (0 <= cos <= 1 << 16 and 1 <= n <= 1000 and max(r, g, b) <= 255):
+                sys.stderr.write(f"gatesim_vectors.py: {sys.argv[6]}:{number}: '{line.strip()}' is not "
+                                 "'cos n r g b' in hex (cos 0..10000, n 1..3e8, r, g, b 0..ff)\n")
+                return 2
+            # the code as an exact real (a multiple of 2^-16): specular_tb takes it back to the code
+            stimulus += f"{cos / 65536!r},{n},{r},{g},{b}\n"
+    else:
+        for group in GROUPS[:groups]:
+            n, rgb = group.split(",", 1)
+            for cos in COSINES:
+                stimulus += f"{cos},{n},{rgb}\n"
     with open(f"{out}/stimulus.csv", "w") as f:
         f.write(stimulus)
     listing = []

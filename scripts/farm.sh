@@ -334,13 +334,18 @@ launch() {  # launch DIR IDS... : run the tasks IDS and then the merge
   local common=(--parsable --time="$time_limit")
   [[ -n $partition ]] && common+=(--partition="$partition")
   [[ -n $account ]] && common+=(--account="$account")
-  local array
-  array=$(IFS=,; echo "${ids[*]}")
+  # Array indices are 0..k-1, the line of the task's ID in this launch's list: Slurm
+  # refuses an index at or above MaxArraySize (1001 by default), and a regression's IDs
+  # (or --groups' selection of them) go past it.
+  local array list
+  list="$dir/array-$(date +%s%N).ids"
+  printf '%s\n' "${ids[@]}" >"$list"
+  array="0-$((${#ids[@]} - 1))"
   [[ -n $width ]] && array+="%$width"
   local array_job merge_job
   array_job=$(sbatch "${common[@]}" --job-name="farm-$(cat "$dir/regression")" --cpus-per-task=1 \
-    --array="$array" --output="$dir/logs/slurm-%a.log" --chdir="$dir" \
-    --wrap="'$script' task '$dir' \$SLURM_ARRAY_TASK_ID")
+    --array="$array" --output="$dir/logs/slurm-%A-%a.log" --chdir="$dir" \
+    --wrap="'$script' task '$dir' \$(sed -n \"\$((SLURM_ARRAY_TASK_ID + 1))p\" '$list')")
   # afterok: the merge runs only when every task succeeded; a failed or killed task
   # cancels it (--kill-on-invalid-dep), and 'farm.sh wait' then names the task.
   merge_job=$(sbatch "${common[@]}" --job-name="farm-merge" --dependency="afterok:${array_job%%;*}" \

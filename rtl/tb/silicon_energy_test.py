@@ -6,6 +6,8 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
 
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH CHECK
   CHECK: inverter_chain | glitch | rom_monotonic | openSTA | arguments
+  silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH whole_path NETLIST_DIR VECTORS_TOOL
+                         SPECULAR_TB ROM_DIR
 
 - inverter_chain: three INVX1 in a chain, input toggled K = 40 times (20 rises, 20
   falls): the energy equals the hand computation from INVX1's Liberty numbers, read here
@@ -25,8 +27,15 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
   OpenSTA's own slews (energy.py sta-slews).
 - rom_monotonic: scripts/silicon/rom_model.py's energy per read grows with the words
   (width fixed) and with the width (words fixed).
+- whole_path: scripts/energy.sh on the drawn device's mapped netlist (silicon_flow's)
+  with 4 random operands: 22 results (the common stream's 18 edge cases + 4); the device
+  replayed the operands specular_variant_vectors writes for any variant (asked here of
+  one_pass, whose model is not the device's) and its testbench expected the pins 24-26
+  the patent variant's C++ model gives; the figure is the sum of its parts; the zero-delay
+  replay gave as many results; T_sim is the top's row of energy_streams.tsv.
 Exit 0 pass, 1 fail.
 """
+import csv
 import json
 import os
 import re
@@ -270,7 +279,8 @@ def check_arguments(energy_py, scratch):
     for args, text in ((["--period", "0"], "'0' is not a period in ns from 1 to 1000"),
                        (["--period", "abc"], "'abc' is not a period in ns from 1 to 1000"),
                        (["--t-sim", "-3"], "'-3' is not a period in ns above 0"),
-                       (["--random", "x"], "'x' is not a count"),
+                       (["--random", "x"], "'x' is not a count from 0 to 5000"),
+                       (["--random", "5001"], "'5001' is not a count from 0 to 5000"),
                        (["--top", "no_such_top"], "top 'no_such_top' has no flow pieces"),
                        (["--bogus"], "unknown option '--bogus'"),
                        ([], "usage")):
@@ -282,8 +292,55 @@ def check_arguments(energy_py, scratch):
     return 0
 
 
+def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb, rom_dir):
+    scripts = os.path.dirname(os.path.dirname(energy_py))
+    out = os.path.join(scratch, "energy")
+    r = subprocess.run(["bash", os.path.join(scripts, "energy.sh"), "--top", "specular_device",
+                        "--netlist-dir", netlist_dir, "--random", "4", "--vectors-tool", vectors_tool,
+                        "--specular-tb", specular_tb, out, rom_dir], capture_output=True, text=True)
+    if r.returncode != 0:
+        print(f"FAIL: energy.sh exit {r.returncode}: {r.stderr}")
+        return 1
+    e = json.load(open(os.path.join(out, "energy.json")))
+    fails = []
+    if e["results"] != 22 or e.get("zero_delay_results") != 22:
+        fails.append(f"results {e['results']} (zero delay {e.get('zero_delay_results')}), want 22: 18 edge cases + 4")
+    if e.get("random_from") != 18 or e.get("random_results") != 4:
+        fails.append(f"random results {e.get('random_from')}..{e.get('random_results')}, want from 18, 4 of them")
+    # the operands: the stream any variant replays (one_pass's), the expected pins: patent's model
+    stream = {}
+    for name in ("one_pass", "patent"):
+        text = subprocess.run([vectors_tool, name, "--count", "22", "--seed", "1"], capture_output=True,
+                              text=True, check=True).stdout
+        stream[name] = [[int(x, 16) for x in line.split()] for line in text.splitlines()]
+    rows = list(csv.DictReader(open(os.path.join(out, "sdf", "vectors_patent_patent_clamp.csv"))))
+    replayed = [[int(v["reg1_hex"], 16), int(v["n"]), int(v["r"]), int(v["g"]), int(v["b"])] for v in rows]
+    if replayed != [x[:5] for x in stream["one_pass"]]:
+        fails.append(f"replayed operands {replayed[:3]}... are not the common stream's {stream['one_pass'][:3]}...")
+    pins = [[int(v[f"pin{k}_hex"], 16) for k in (24, 25, 26)] for v in rows]
+    if pins != [x[6:9] for x in stream["patent"]]:
+        fails.append("the device's expected pins 24-26 differ from the patent variant's model")
+    parts = e["internal_pj"] + e["switching_pj"] + e["rom_pj"] + e["leakage_pj_at_period"]
+    if min(e["internal_pj"], e["switching_pj"], e["rom_pj"]) <= 0 or abs(parts / e["total_pj_at_period"] - 1) > 1e-9:
+        fails.append(f"total {e['total_pj_at_period']} is not the sum of positive parts ({parts})")
+    if not 0 < e["glitch_toggle_share"] < 1:
+        fails.append(f"glitch share of the toggles {e['glitch_toggle_share']} not in (0, 1)")
+    rows_tsv = [l.split() for l in open(os.path.join(scripts, "silicon", "energy_streams.tsv"))
+                if l.startswith("specular_device ")]
+    if not rows_tsv or e["t_sim_ns"] != float(rows_tsv[0][2]):
+        fails.append(f"T_sim {e['t_sim_ns']} is not energy_streams.tsv's {rows_tsv}")
+    for f in fails:
+        print("FAIL:", f)
+    if not fails:
+        print(f"PASS whole_path: 22 results of the common stream, {e['total_pj_at_period']:.0f} pJ per result")
+    return 1 if fails else 0
+
+
 def main():
     energy_py, osu, scratch, check = sys.argv[1:5]
+    if check == "whole_path":
+        os.makedirs(scratch, exist_ok=True)
+        return check_whole_path(energy_py, scratch, *sys.argv[5:9])
     os.makedirs(scratch, exist_ok=True)
     if check == "inverter_chain":
         return check_inverter_chain(energy_py, osu, scratch)
@@ -295,7 +352,7 @@ def main():
         return check_rom_monotonic(energy_py)
     if check == "arguments":
         return check_arguments(energy_py, scratch)
-    print(f"unknown check '{check}' (inverter_chain, glitch, openSTA, rom_monotonic)")
+    print(f"unknown check '{check}' (inverter_chain, glitch, openSTA, rom_monotonic, arguments, whole_path)")
     return 2
 
 

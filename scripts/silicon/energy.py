@@ -857,6 +857,12 @@ def report(args):
         out["random_dynamic_sem_rel"] = sd / m / len(inc) ** 0.5
         out["random_running_max_dev_second_half"] = max(abs(x / m - 1) for x in run[len(run) // 2:])
         out["random_results_for_1pct_sem"] = int((sd / m / 0.01) ** 2) + 1
+        # the design's figure: the mean over the random operands (the same distribution for
+        # every design, whatever its stream's length), settled when its standard error is 1 %
+        out["random_total_pj_at_period"] = m * scale + leak_pj(args.period)
+        if args.t_sim:
+            out["random_total_pj_at_t_sim"] = m * scale + leak_pj(args.t_sim)
+        out["settled_1pct"] = out["random_dynamic_sem_rel"] <= 0.01
         out["random_running"] = [{"results": j, "pj_per_result": run[j - 1] * scale}
                                  for j in sorted({max(1, len(run) // 8), len(run) // 4, len(run) // 2,
                                                   3 * len(run) // 4, len(run)})]
@@ -892,7 +898,10 @@ def report(args):
                   f"{out['random_dynamic_sd_pj']:.1f} pJ, standard error of the mean "
                   f"{100 * out['random_dynamic_sem_rel']:.2f} %; the running mean stays within "
                   f"{100 * out['random_running_max_dev_second_half']:.2f} % of it over the second half; "
-                  f"a 1 % standard error needs {out['random_results_for_1pct_sem']} random results.", "",
+                  f"a 1 % standard error needs {out['random_results_for_1pct_sem']} random results: "
+                  f"{'settled' if out['settled_1pct'] else 'NOT settled to 1 % (a longer stream: --random)'}. "
+                  f"Energy per result over the random operands: "
+                  f"{out['random_total_pj_at_period']:.1f} pJ at {args.period} ns.", "",
                   "| random results | pJ / result (running mean) |", "|---:|---:|"]
         lines += [f"| {r['results']} | {r['pj_per_result']:.1f} |" for r in out["random_running"]]
         lines.append("")

@@ -7,7 +7,9 @@
 #      its place, the counts, the results' checksum);
 #      specular_variant_error's figures less the wall time; a variant's RTL tests PASS;
 #   2. a task killed on purpose (scancel of one array task) makes the merge fail, naming
-#      the task and its log; resubmitting only that task completes the run.
+#      the task and its log; resubmitting only that task completes the run;
+#   3. a failed task's status is valid JSON;
+#   4. task IDs past Slurm's MaxArraySize (1001) are submitted and run.
 # Skips (exit 77) without root or without the slurm-wlm and munge packages.
 # With "local", the same checks through the local executor (no Slurm needed): the
 # "killed" task is one whose status and partial are removed after the run, as a task
@@ -102,7 +104,9 @@ last=$(tail -n1 "$scratch/run1/tasks.tsv" | cut -f1)
 if [[ $executor == slurm ]]; then
   "$farm" submit smoke "${run_options[@]}" --array-width 1 --out "$scratch/run2"
   array_job=$(awk '{print $2}' "$scratch/run2/jobs.txt")
-  scancel "${array_job}_${last}"
+  # the array index of a task is its line in the launch's list of IDs, less one
+  index=$(( $(grep -nx "$last" "$scratch"/run2/array-*.ids | cut -d: -f1) - 1 ))
+  scancel "${array_job}_${index}"
   if "$farm" wait "$scratch/run2" 2>"$scratch/run2.err"; then fail "the merge passed with task $last killed"; fi
 else
   cp -r "$scratch/run1" "$scratch/run2"
@@ -128,4 +132,23 @@ awk -F'\t' -v OFS='\t' -v id="$last" '$1 == id {$4 = $4 " --no-such-option"} 1' 
 if "$farm" task "$scratch/run3" "$last" 2>/dev/null; then fail "task $last passed with a bad option"; fi
 jq -e '.exit != 0 and (.wall_seconds | type) == "number" and (.cpu_seconds | type) == "number"' \
   "$scratch/run3/status/$last.json" >/dev/null || fail "a failed task's status is not valid JSON with its exit and times"
+# 4. Task IDs past Slurm's MaxArraySize (1001 by default; the full regression's go to
+#    about 1 400): run 1 with every ID moved up by 5000, its last task resubmitted, runs
+#    it (the array's indices are the launch's lines, not the IDs) and merges to PASS.
+cp -r "$scratch/run1" "$scratch/run4"
+rm -f "$scratch/run4"/array-*.ids "$scratch/run4/jobs.txt"
+awk -F'\t' -v OFS='\t' '{$1 += 5000} 1' "$scratch/run1/tasks.tsv" >"$scratch/run4/tasks.tsv"
+for kind in status partials; do
+  for f in "$scratch/run1/$kind"/*.json; do
+    id=$(basename "$f" .json); mv "$scratch/run4/$kind/$id.json" "$scratch/run4/$kind/$((id + 5000)).json"
+  done
+done
+rm "$scratch/run4/status/$((last + 5000)).json" "$scratch/run4/partials/$((last + 5000)).json"
+"$farm" resubmit "$scratch/run4" "${run_options[@]}" 2>"$scratch/resubmit4.err" || [[ $executor == slurm ]] ||
+  fail "the resubmitted run with IDs above 5000 failed"
+cat "$scratch/resubmit4.err"
+grep -q "task(s) $((last + 5000)) again" "$scratch/resubmit4.err" || fail "resubmit did not run exactly task $((last + 5000))"
+if [[ $executor == slurm ]]; then "$farm" wait "$scratch/run4" || fail "the run with IDs above 5000 failed"; fi
+jq -e '.verdict == "PASS"' "$scratch/run4/report.json" >/dev/null || fail "the run with IDs above 5000 does not say PASS"
+
 echo "farm_test.sh: PASS"

@@ -148,11 +148,12 @@ def energy_table(designs, front_error, front_area):
         marks = [m for m, f in (("energy–error", front_error), ("energy–area", front_area)) if i in f]
         pct = lambda k: f"{100 * g[k]:.0f} %" if g.get(k) is not None else "—"
         settled = ("yes" if g.get("settled_1pct") else "**no**") if "settled_1pct" in g else "—"
+        sem = f" ± {100 * g['random_dynamic_sem_rel']:.1f} %" if "random_dynamic_sem_rel" in g else " (whole stream)"
         lines.append(
             f"| {d['label']} | {s['die_area_estimate_mm2']:.3f} | "
             f"{sci(e.get('lobe_max_abs'))} | {num(g['clocks_per_result'])} | "
-            f"**{energy_figure(g):.0f}** ± {100 * g['random_dynamic_sem_rel']:.1f} % | "
-            f"{g['random_results']} | {settled} | {num(g.get('t_sim_ns'), 1)} | "
+            f"**{energy_figure(g):.0f}**{sem} | "
+            f"{g.get('random_results', 0)} | {settled} | {num(g.get('t_sim_ns'), 1)} | "
             f"{num(g.get('random_total_pj_at_t_sim'), 0)} | {g['internal_pj']:.0f} | "
             f"{g['switching_pj']:.0f} | {g['rom_pj']:.0f} | {g['leakage_pj_at_period']:.2f} | "
             f"{g['total_pj_at_period']:.0f} | {reads} | {num(g.get('zero_delay_logic_pj'), 0)} | "
@@ -163,10 +164,13 @@ def energy_table(designs, front_error, front_area):
 
 def energy_figure(g):
     """A design's energy per result at the common clock: the random operands' mean (an
-    energy.json written before the figure had a name of its own: recomputed the same way)."""
+    energy.json written before the figure had a name of its own: recomputed the same way;
+    without random operands, the whole stream's)."""
     if "random_total_pj_at_period" in g:
         return g["random_total_pj_at_period"]
-    return g["random_dynamic_pj"] + g["leakage_pj_at_period"]
+    if "random_dynamic_pj" in g:
+        return g["random_dynamic_pj"] + g["leakage_pj_at_period"]
+    return g["total_pj_at_period"]  # a stream of fewer than 4 random operands: the whole
 
 
 def times_table(designs):
@@ -244,13 +248,13 @@ def main():
         return 1
     err = [d["error"]["lobe_max_abs"] if d["error"] else None for d in designs]
     die = [d["summary"]["die_area_estimate_mm2"] for d in designs]
-    tput = [d["summary"]["results_per_second_per_mm2_streamed"] for d in designs]
-    front_area = pareto(list(zip(die, err)))
-    front_tput = pareto([(-t, e) for t, e in zip(tput, err)])
-    text = table(designs, front_area, front_tput) + "\n" + times_table(designs)
-    out = a.table or os.path.join(a.runs, "design_space_table.md")
-    if a.energy_only:
-        text, out = "", None
+    text, out = "", None
+    if not a.energy_only:  # the other table needs the whole flow's summary; the energy one not
+        tput = [d["summary"]["results_per_second_per_mm2_streamed"] for d in designs]
+        front_area = pareto(list(zip(die, err)))
+        front_tput = pareto([(-t, e) for t, e in zip(tput, err)])
+        text = table(designs, front_area, front_tput) + "\n" + times_table(designs)
+        out = a.table or os.path.join(a.runs, "design_space_table.md")
     if out:
         with open(out, "w") as f:
             f.write(text)

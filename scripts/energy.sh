@@ -23,6 +23,9 @@
 #                       18+N --seed 1 (a device top through its own testbench, gatesim.sh
 #                       --stimulus, with the patent's policy and no reset mid-operation)
 #   --vectors-tool PATH, --specular-tb PATH  as gatesim.sh
+#   --counter PATH      the toggle counter (default build/tools/vcd_activity/
+#                       specular_vcd_activity; without it energy.py's own reader, the
+#                       reference, counts: the same figures, 10-20 times slower)
 #   --keep-vcd          keep the two VCDs (deleted after counting by default: up to GBs)
 #   --no-zero-delay     skip the zero-delay replay (no glitch share)
 #
@@ -45,6 +48,7 @@ cpr=""
 random=""
 vectors_tool="$root/build/tools/variant_vectors/specular_variant_vectors"
 specular_tb="$root/build/testbench/specular_tb"
+counter="$root/build/tools/vcd_activity/specular_vcd_activity"
 keep_vcd=0
 zero=1
 args=()
@@ -53,12 +57,13 @@ while [[ $# -gt 0 ]]; do
     -h|--help) usage; exit 0 ;;
     --keep-vcd) keep_vcd=1; shift ;;
     --no-zero-delay) zero=0; shift ;;
-    --top|--netlist-dir|--period|--t-sim|--clocks-per-result|--random|--vectors-tool|--specular-tb)
+    --top|--netlist-dir|--period|--t-sim|--clocks-per-result|--random|--vectors-tool|--specular-tb|--counter)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --period) period="$2" ;;
         --t-sim) t_sim="$2" ;; --clocks-per-result) cpr="$2" ;;
         --random) random="$2" ;; --vectors-tool) vectors_tool="$2" ;; --specular-tb) specular_tb="$2" ;;
+        --counter) counter="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -139,6 +144,12 @@ sta -no_splash -exit "$out/slews.tcl" > "$out/slews.log" 2>&1 && [[ -s "$out/sle
   || { echo "energy.sh: OpenSTA's slews failed; see $out/slews.log" >&2; exit 1; }
 
 # ---- the replays and their toggles -------------------------------------------------
+counter_opts=()
+if [[ -x "$counter" ]]; then
+  counter_opts=(--counter "$counter")
+else
+  echo "energy.sh: no toggle counter at '$counter' (cmake --build build --target specular_vcd_activity): energy.py's own reader counts, 10-20 times slower" >&2
+fi
 modes=(sdf)
 [[ $zero -eq 0 ]] || modes+=(zero)
 for mode in "${modes[@]}"; do
@@ -157,7 +168,7 @@ for mode in "${modes[@]}"; do
     --lib "$netlist_dir/rom_macros.lib" --netlist "$netlist_dir/mapped.v" --top "$top" \
     --tb-top "$TB_TOP" --vcd "$out/$mode/activity.vcd" --slews "$out/slews.txt" \
     --rom-model "$netlist_dir/rom_model.json" "${strobe[@]}" \
-    --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
+    "${counter_opts[@]}" --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
     || { echo "energy.sh: counting the $mode activity failed" >&2; exit 1; }
   echo "count_s $((SECONDS - started))" >> "$out/$mode/time.txt"
   echo "vcd_bytes $(stat -c %s "$out/$mode/activity.vcd")" >> "$out/$mode/time.txt"

@@ -69,6 +69,7 @@ def run_job(build, job, name, shard, partial):
         command = ["bash", os.path.join(ROOT, "scripts", "energy.sh"), "--top", "specular_" + name,
                    "--vectors-tool", os.path.join(build, "tools", "variant_vectors", "specular_variant_vectors"),
                    "--specular-tb", os.path.join(build, "testbench", "specular_tb"),
+                   "--counter", os.path.join(build, "tools", "vcd_activity", "specular_vcd_activity"),
                    out, os.path.join(build, "rtl", "rom", "default")]
         result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         sys.stdout.write(result.stdout)

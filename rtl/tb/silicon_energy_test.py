@@ -7,7 +7,8 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH CHECK
   CHECK: inverter_chain | glitch | rom_monotonic | openSTA | arguments
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH whole_path NETLIST_DIR VECTORS_TOOL
-                         SPECULAR_TB ROM_DIR
+                         SPECULAR_TB ROM_DIR COUNTER
+  silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH counter COUNTER
 
 - inverter_chain: three INVX1 in a chain, input toggled K = 40 times (20 rises, 20
   falls): the energy equals the hand computation from INVX1's Liberty numbers, read here
@@ -32,7 +33,11 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
   replayed the operands specular_variant_vectors writes for any variant (asked here of
   one_pass, whose model is not the device's) and its testbench expected the pins 24-26
   the patent variant's C++ model gives; the figure is the sum of its parts; the zero-delay
-  replay gave as many results; T_sim is the top's row of energy_streams.tsv.
+  replay gave as many results; T_sim is the top's row of energy_streams.tsv; the toggle
+  counter energy.sh used (tools/vcd_activity) counted the SDF replay's VCD as energy.py's
+  own reader does.
+- counter: the toggle counter equals energy.py's reader on the glitch generator's
+  replays, a result shown four ways (a strobe's rise or fall, clk_valid, from 40 ns on).
 Exit 0 pass, 1 fail.
 """
 import csv
@@ -112,12 +117,13 @@ def replay(energy_py, osu, scratch, top, out_port, netlist_text, delays, tag):
     return net, vcd, d
 
 
-def compute(energy_py, osu, net, top, vcd, slews, d, name):
+def compute(energy_py, osu, net, top, vcd, slews, d, name, results=("--results-strobe", "clk", "--results-mode", "rise"),
+            extra=()):
     out = os.path.join(d, f"{name}.json")
     toggles = os.path.join(d, f"{name}_toggles.txt")
     run(["/usr/bin/python3", energy_py, "compute", "--lib", os.path.join(osu, "osu018_stdcells.lib"),
          "--netlist", net, "--top", top, "--tb-top", "energy_tb", "--vcd", vcd, "--slews", slews,
-         "--results-strobe", "clk", "--results-mode", "rise", "--toggles-out", toggles, "--out", out])
+         *results, *extra, "--toggles-out", toggles, "--out", out])
     t = {}
     for line in open(toggles):
         n, r, f = line.split()
@@ -292,12 +298,59 @@ def check_arguments(energy_py, scratch):
     return 0
 
 
-def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb, rom_dir):
+def same_counts(a, b, what):
+    """energy.py compute's answers a (its own reader) and b (specular_vcd_activity): the same
+    results, toggles, ROM reads and checkpoints; energies to rounding (the order of a sum)."""
+    fails = []
+    for k in ("results", "toggles", "rom_reads", "nets", "span_ns"):
+        if a[k] != b[k]:
+            fails.append(f"{what}: {k} {a[k]} (reader) against {b[k]} (counter)")
+    for k in ("internal_pj", "switching_pj", "rom_pj"):
+        if abs(a[k] - b[k]) > 1e-9 * max(1.0, abs(a[k])):
+            fails.append(f"{what}: {k} {a[k]} (reader) against {b[k]} (counter)")
+    ca, cb = a["checkpoints"], b["checkpoints"]
+    if len(ca) != len(cb) or any(x[:2] != y[:2] or abs(x[2] - y[2]) > 1e-6 * max(1.0, abs(x[2]))
+                                 for x, y in zip(ca, cb)):
+        fails.append(f"{what}: checkpoints differ ({len(ca)} against {len(cb)})")
+    return fails
+
+
+def check_counter(energy_py, osu, scratch, counter):
+    """tools/vcd_activity's counter equals energy.py's reader on the glitch generator's two
+    replays, for each way a result shows (a strobe's rise, its fall, a clock edge with n1,
+    which ends high, as the strobe) and with counting from 40 ns on."""
+    fails = []
+    for tag, delays in (("counter_delays", True), ("counter_zero", False)):
+        net, vcd, d = replay(energy_py, osu, scratch, "glitch", "g", GLITCH, delays, tag)
+        slews = os.path.join(d, "slews.txt")
+        fixed_slews(slews, [f"u{i}" for i in range(1, 7)] + ["ux"], ["A", "B"])
+        for name, results, extra in (
+                ("rise", ("--results-strobe", "clk", "--results-mode", "rise"), ()),
+                ("fall", ("--results-strobe", "a", "--results-mode", "fall"), ()),
+                ("clk_valid", ("--results-strobe", "n1", "--results-mode", "clk_valid", "--clock", "clk"), ()),
+                ("late", ("--results-strobe", "clk", "--results-mode", "rise"), ("--t-begin", "40"))):
+            a, ta = compute(energy_py, osu, net, "glitch", vcd, slews, d, f"{name}_reader", results, extra)
+            b, tb = compute(energy_py, osu, net, "glitch", vcd, slews, d, f"{name}_counter", results,
+                            (*extra, "--counter", counter))
+            fails += same_counts(a, b, f"{tag} {name}")
+            if ta != tb:
+                fails.append(f"{tag} {name}: per-net toggles differ")
+            if a["results"] == 0 or a["toggles"] == 0:
+                fails.append(f"{tag} {name}: nothing counted ({a['results']} results, {a['toggles']} toggles)")
+    for f in fails:
+        print("FAIL:", f)
+    if not fails:
+        print("PASS counter: specular_vcd_activity counts as energy.py's reader (2 replays x 4 ways)")
+    return 1 if fails else 0
+
+
+def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb, rom_dir, counter):
     scripts = os.path.dirname(os.path.dirname(energy_py))
     out = os.path.join(scratch, "energy")
     r = subprocess.run(["bash", os.path.join(scripts, "energy.sh"), "--top", "specular_device",
                         "--netlist-dir", netlist_dir, "--random", "4", "--vectors-tool", vectors_tool,
-                        "--specular-tb", specular_tb, out, rom_dir], capture_output=True, text=True)
+                        "--specular-tb", specular_tb, "--counter", counter, "--keep-vcd", out, rom_dir],
+                       capture_output=True, text=True)
     if r.returncode != 0:
         print(f"FAIL: energy.sh exit {r.returncode}: {r.stderr}")
         return 1
@@ -325,6 +378,18 @@ def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb,
         fails.append(f"total {e['total_pj_at_period']} is not the sum of positive parts ({parts})")
     if not 0 < e["glitch_toggle_share"] < 1:
         fails.append(f"glitch share of the toggles {e['glitch_toggle_share']} not in (0, 1)")
+    # the counter energy.sh used against energy.py's own reader, on the SDF replay's VCD
+    # (ROM macros' reads and a real netlist's names)
+    cmd = json.load(open(os.path.join(out, "energy_sdf.json")))
+    reader = os.path.join(out, "energy_sdf_reader.json")
+    run(["/usr/bin/python3", energy_py, "compute", "--lib", "/usr/share/qflow/tech/osu018/osu018_stdcells.lib",
+         "--lib", os.path.join(netlist_dir, "rom_macros.lib"), "--netlist", os.path.join(netlist_dir, "mapped.v"),
+         "--top", "specular_device", "--tb-top", "specular_device_tb", "--vcd", os.path.join(out, "sdf", "activity.vcd"),
+         "--slews", os.path.join(out, "slews.txt"), "--rom-model", os.path.join(netlist_dir, "rom_model.json"),
+         "--results-strobe", "pin35_done", "--results-mode", "rise", "--out", reader])
+    fails += same_counts(json.load(open(reader)), cmd, "the device's SDF replay")
+    if not cmd["rom_reads"] or min(cmd["rom_reads"].values()) == 0:
+        fails.append(f"no ROM read counted: {cmd['rom_reads']}")
     rows_tsv = [l.split() for l in open(os.path.join(scripts, "silicon", "energy_streams.tsv"))
                 if l.startswith("specular_device ")]
     if not rows_tsv or e["t_sim_ns"] != float(rows_tsv[0][2]):
@@ -340,7 +405,10 @@ def main():
     energy_py, osu, scratch, check = sys.argv[1:5]
     if check == "whole_path":
         os.makedirs(scratch, exist_ok=True)
-        return check_whole_path(energy_py, scratch, *sys.argv[5:9])
+        return check_whole_path(energy_py, scratch, *sys.argv[5:10])
+    if check == "counter":
+        os.makedirs(scratch, exist_ok=True)
+        return check_counter(energy_py, osu, scratch, sys.argv[5])
     os.makedirs(scratch, exist_ok=True)
     if check == "inverter_chain":
         return check_inverter_chain(energy_py, osu, scratch)
@@ -352,7 +420,7 @@ def main():
         return check_rom_monotonic(energy_py)
     if check == "arguments":
         return check_arguments(energy_py, scratch)
-    print(f"unknown check '{check}' (inverter_chain, glitch, openSTA, rom_monotonic, arguments, whole_path)")
+    print(f"unknown check '{check}' (inverter_chain, glitch, openSTA, rom_monotonic, arguments, whole_path, counter)")
     return 2
 
 

@@ -114,9 +114,10 @@ fi
 # takes its operands as a stimulus (its testbench's own expected values, the patent's
 # policy), with no operation aborted by reset (RESET_EVERY), so that every operation is
 # a result, as in a variant's testbench.
-random_from=18
 ENERGY_RESULTS=()
-source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top)
+ENERGY_LEAD_RESULTS=0
+source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top); results before the stream's
+random_from=$((18 + ENERGY_LEAD_RESULTS))
 [[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)"
 strobe=("${ENERGY_RESULTS[@]}")
 if [[ $variant -eq 1 ]]; then

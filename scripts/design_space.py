@@ -163,14 +163,9 @@ def energy_table(designs, front_error, front_area):
 
 
 def energy_figure(g):
-    """A design's energy per result at the common clock: the random operands' mean (an
-    energy.json written before the figure had a name of its own: recomputed the same way;
-    without random operands, the whole stream's)."""
-    if "random_total_pj_at_period" in g:
-        return g["random_total_pj_at_period"]
-    if "random_dynamic_pj" in g:
-        return g["random_dynamic_pj"] + g["leakage_pj_at_period"]
-    return g["total_pj_at_period"]  # a stream of fewer than 4 random operands: the whole
+    """A design's energy per result at the common clock: the random operands' mean; without
+    random operands (fewer than 4), the whole stream's."""
+    return g.get("random_total_pj_at_period", g["total_pj_at_period"])
 
 
 def times_table(designs):

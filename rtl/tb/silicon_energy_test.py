@@ -298,6 +298,15 @@ def check_arguments(energy_py, scratch):
     return 0
 
 
+def verdict(fails, passed):
+    """Each failure on a line of its own, or the pass line; the exit status."""
+    for f in fails:
+        print("FAIL:", f)
+    if not fails:
+        print(passed)
+    return 1 if fails else 0
+
+
 def same_counts(a, b, what):
     """energy.py compute's answers a (its own reader) and b (specular_vcd_activity): the same
     results, toggles, ROM reads and checkpoints; energies to rounding (the order of a sum)."""
@@ -337,11 +346,7 @@ def check_counter(energy_py, osu, scratch, counter):
                 fails.append(f"{tag} {name}: per-net toggles differ")
             if a["results"] == 0 or a["toggles"] == 0:
                 fails.append(f"{tag} {name}: nothing counted ({a['results']} results, {a['toggles']} toggles)")
-    for f in fails:
-        print("FAIL:", f)
-    if not fails:
-        print("PASS counter: specular_vcd_activity counts as energy.py's reader (2 replays x 4 ways)")
-    return 1 if fails else 0
+    return verdict(fails, "PASS counter: specular_vcd_activity counts as energy.py's reader (2 replays x 4 ways)")
 
 
 def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb, rom_dir, counter):
@@ -394,11 +399,7 @@ def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb,
                 if l.startswith("specular_device ")]
     if not rows_tsv or e["t_sim_ns"] != float(rows_tsv[0][2]):
         fails.append(f"T_sim {e['t_sim_ns']} is not energy_streams.tsv's {rows_tsv}")
-    for f in fails:
-        print("FAIL:", f)
-    if not fails:
-        print(f"PASS whole_path: 22 results of the common stream, {e['total_pj_at_period']:.0f} pJ per result")
-    return 1 if fails else 0
+    return verdict(fails, f"PASS whole_path: 22 results of the common stream, {e['total_pj_at_period']:.0f} pJ per result")
 
 
 def main():

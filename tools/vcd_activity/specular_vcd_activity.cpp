@@ -70,6 +70,8 @@ std::vector<std::string> words(const std::string& line) {
 
 bool binary(char v) { return v == '0' || v == '1'; }
 
+enum class ResultMode { none, rise, fall, clk_valid };  // how a result shows (the map's strobe line)
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -86,7 +88,7 @@ int main(int argc, char** argv) {
     std::vector<Group> groups;
     std::vector<std::vector<int>> net_groups;
     int strobe = -1, clock = -1;
-    std::string mode;
+    ResultMode mode = ResultMode::none;
     double begin_ps = 0.0;
     std::string line;
     for (int number = 1; std::getline(map_in, line); ++number) {
@@ -119,8 +121,9 @@ int main(int argc, char** argv) {
             groups.push_back(g);
         } else if (f.size() == 3 && f[0] == "strobe") {
             strobe = net_of(f[1]);
-            mode = f[2];
-            if (mode != "rise" && mode != "fall" && mode != "clk_valid") fail(where + ": mode '" + mode + "' is not rise, fall or clk_valid");
+            mode = f[2] == "rise" ? ResultMode::rise : f[2] == "fall" ? ResultMode::fall
+                 : f[2] == "clk_valid" ? ResultMode::clk_valid : ResultMode::none;
+            if (mode == ResultMode::none) fail(where + ": mode '" + f[2] + "' is not rise, fall or clk_valid");
         } else if (f.size() == 2 && f[0] == "clock") {
             clock = net_of(f[1]);
         } else if (f.size() == 2 && f[0] == "begin") {
@@ -256,9 +259,10 @@ int main(int argc, char** argv) {
         }
         moved.clear();
         if (counting) {
-            const bool result = (mode == "rise" && strobe_value == '0' && new_strobe == '1') ||
-                                (mode == "fall" && strobe_value == '1' && new_strobe == '0') ||
-                                (mode == "clk_valid" && clock_value == '0' && new_clock == '1' && strobe_value == '1');
+            const bool result = (mode == ResultMode::rise && strobe_value == '0' && new_strobe == '1') ||
+                                (mode == ResultMode::fall && strobe_value == '1' && new_strobe == '0') ||
+                                (mode == ResultMode::clk_valid && clock_value == '0' && new_clock == '1' &&
+                                 strobe_value == '1');
             if (result) checkpoints.emplace_back(t_ps, ++results, energy);
         }
         clock_value = new_clock;
@@ -303,7 +307,7 @@ int main(int argc, char** argv) {
         }
     }
     if (!pending.empty()) flush();
-    if (mode == "clk_valid" && strobe_value == '1' && t_ps >= begin_ps) checkpoints.emplace_back(t_ps, ++results, energy);
+    if (mode == ResultMode::clk_valid && strobe_value == '1' && t_ps >= begin_ps) checkpoints.emplace_back(t_ps, ++results, energy);
 
     // ---- the counts -------------------------------------------------------------------
     FILE* out = std::fopen(argv[3], "w");

@@ -42,6 +42,7 @@ echo "+ cmake --build $build -j$jobs --target ${targets[*]}"
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 
 status=0
+failed_logs=()
 export SPECULAR_LSAN_EXTRA="$PWD/fuzz/lsan.supp"
 for target in "${targets[@]}"; do
   exe="$build/fuzz/$target"
@@ -61,6 +62,7 @@ for target in "${targets[@]}"; do
     if ! ASAN_OPTIONS="$asan_options" scripts/sanitizer_env.sh "$exe" "${regressions[@]}" >"$build/$target.regressions.log" 2>&1; then
       echo "fuzz.sh: $target: a saved finding fails again; see $build/$target.regressions.log" >&2
       status=1
+      failed_logs+=("$build/$target.regressions.log")
       continue
     fi
   fi
@@ -77,7 +79,13 @@ for target in "${targets[@]}"; do
     echo "fuzz.sh: $target found a problem; the input is in $artifacts, the log in $build/$target.log" >&2
     tail -n 40 "$build/$target.log" >&2
     status=1
+    failed_logs+=("$build/$target.log")
   fi
 done
-if [ "$status" -eq 0 ]; then echo "fuzz.sh: no findings (${seconds} s per target)"; fi
+if [ "$status" -eq 0 ]; then
+  echo "fuzz.sh: no findings (${seconds} s per target)"
+else
+  # Each failed run's class (sanitizer fatal error, leak, ASan, UBSan, other): issue 45.
+  python3 scripts/sanitizer_failures.py --logs "${failed_logs[@]}" || true
+fi
 exit "$status"

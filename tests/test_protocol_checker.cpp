@@ -185,10 +185,12 @@ TYPED_TEST(ProtocolChecker, RegisterWritesBetweenStartAndDoneAreReported) {
 }
 
 TYPED_TEST(ProtocolChecker, MisuseCanBeRaisedToAnErrorOrFiltered) {
-#if defined(__SANITIZE_ADDRESS__)
-  // The sc_report thrown on a QuickThreads stack of Debian's libsystemc (built without
-  // ASan's fiber annotations) trips ASan's no-return handler: a known false positive.
-  GTEST_SKIP() << "an exception out of an SC_THREAD is not supported under ASan here";
+#if defined(__SANITIZE_ADDRESS__) && defined(__clang__)
+  // The sc_report is thrown from an SC_METHOD, on SystemC 2.3.4's main coroutine, to which
+  // SystemC names no stack. gcc builds name the main stack for it
+  // (cmake/systemc_asan_main_stack.cpp); clang links its ASan runtime into the program,
+  // where that cannot be done, so ASan's no-return handler sees no stack: a false positive.
+  GTEST_SKIP() << "an exception out of SystemC's main coroutine under clang's ASan";
 #endif
   // What a user does to stop on a lost start but ignore early (yet working) starts.
   sc_core::sc_report_handler::set_actions(report::start_while_busy,

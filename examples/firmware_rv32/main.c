@@ -26,7 +26,11 @@
  *                            machine external interrupt, no PLIC
  *   EXAMPLE_UART_BASE=addr   the console is a byte-wide transmit register at addr
  *                            (default: the write system call, which riscv-vp's
- *                            --intercept-syscalls takes) */
+ *                            --intercept-syscalls takes)
+ *   EXAMPLE_BUS              the driver's accessors are the platform's, from
+ *                            example_platform_bus() (default: none, volatile loads and
+ *                            stores); the host test (tests/test_firmware_example_*.cpp)
+ *                            routes them to a TLM target */
 #include <stddef.h>
 #include <stdint.h>
 
@@ -67,6 +71,10 @@ volatile uint32_t example_last_fault_cause;            /* mcause of the last one
 volatile uint32_t example_last_fault_address;          /* mtval of the last one */
 
 static specular_dev dev;
+
+#ifdef EXAMPLE_BUS
+const specular_bus* example_platform_bus(void);
+#endif
 
 /* startup.S */
 void example_halt(void);
@@ -166,7 +174,8 @@ void example_plic_on(void) {
 /* The driver's idle hook: sleep until the interrupt (the flag is tested with interrupts
  * masked, in example_sleep_unless). */
 static void sleep_until_interrupt(void* context) {
-  example_sleep_unless(&((specular_dev*)context)->irq_pending);
+  (void)context; /* the platform's, if it gave accessors */
+  example_sleep_unless(&dev.irq_pending);
 }
 #endif
 
@@ -184,11 +193,14 @@ static void external_interrupt(void) {
 #endif
 }
 
+/* The length of the instruction at `address`: 2 for a compressed one (low bits not 11). */
+static uintptr_t instruction_length(uintptr_t address) {
+  return (*(const volatile uint16_t*)address & 3u) == 3u ? 4u : 2u;
+}
+
 /* Called by startup.S's trap entry for every trap; returns where to resume (mepc). */
-uint32_t example_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval);
-uint32_t example_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval) {
-  /* The length of the instruction at mepc: 2 for a compressed one (low bits not 11). */
-  const uint32_t length = (*(const volatile uint16_t*)(uintptr_t)mepc & 3u) == 3u ? 4u : 2u;
+uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval);
+uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval) {
   switch (mcause) {
     case MCAUSE_MACHINE_EXTERNAL:
       external_interrupt();
@@ -201,16 +213,16 @@ uint32_t example_trap(uint32_t mcause, uint32_t mepc, uint32_t mtval) {
        * exception reports it. Skip the instruction (a skipped load leaves its register as
        * it was); specular_check_error then gives the cause. */
       ++example_bus_faults;
-      example_last_fault_cause = mcause;
-      example_last_fault_address = mtval;
-      return mepc + length;
+      example_last_fault_cause = (uint32_t)mcause;
+      example_last_fault_address = (uint32_t)mtval;
+      return mepc + instruction_length(mepc);
     case MCAUSE_ECALL_FROM_M:
-      return mepc + length; /* a console or exit call the platform does not take */
+      return mepc + instruction_length(mepc); /* a console or exit call the platform does not take */
     default:
       say("FAIL: unexpected trap, mcause ");
-      say_hex(mcause);
+      say_hex((uint32_t)mcause);
       say(" at ");
-      say_hex(mepc);
+      say_hex((uint32_t)mepc);
       say("\n");
       example_halt();
       return mepc;
@@ -232,7 +244,11 @@ static int run(void) {
   int ch;
   int status;
 
+#ifdef EXAMPLE_BUS
+  status = specular_init(&dev, (uintptr_t)SPECULAR_BASE, example_platform_bus()); /* the platform's accessors */
+#else
   status = specular_init(&dev, (uintptr_t)SPECULAR_BASE, NULL); /* volatile accesses, polling */
+#endif
   if (status != SPECULAR_OK) return driver_failed("specular_init", status);
 
   /* A refused access: N = 1001 written raw (the driver's own calls check it first). */
@@ -270,11 +286,7 @@ static int run(void) {
   say("one operation (polled): pins 24-26 and register 9 equal to Core\n");
 
 #ifdef EXAMPLE_WAIT_IRQ
-  {
-    static specular_bus bus = {NULL, NULL, NULL, NULL, sleep_until_interrupt, NULL};
-    bus.context = &dev; /* read32/write32 NULL: volatile accesses, only the idle hook set */
-    dev.bus = bus;
-  }
+  dev.bus.idle = sleep_until_interrupt; /* the accessors stay: volatile, or the platform's */
 #ifndef EXAMPLE_IRQ_DIRECT
   example_plic_on();
 #endif

@@ -1,0 +1,43 @@
+// The bare-metal example (examples/firmware_rv32/main.c, issue 47) built polled (the row through BATCH_COS word by word, waiting on STATUS),
+// run on the host against each TLM target (tests/support/firmware_example_host.h): it
+// must end with exit status 0 and its PASS line, having compared every result with the
+// bits Core computed at build time (example_expected.h), and its refused store (N = 1001)
+// must have trapped once, been skipped by its handler and reported by
+// specular_check_error. The PLIC build is not run here: its PLIC is memory-mapped and
+// the host has none (firmware_rv32_example_run_irq runs it on a VP).
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "support/firmware_example_host.h"
+
+namespace specular {
+namespace {
+
+using example_host::Kind;
+
+class FirmwareExamplePolled : public testing::TestWithParam<Kind> {};
+
+TEST_P(FirmwareExamplePolled, ChecksEveryResultAgainstCoreAndPasses) {
+  const example_host::Hart& hart = example_host::run_example(GetParam());
+  std::cout << hart.console;
+  EXPECT_TRUE(hart.finished) << "the example never returned (halted: " << hart.halted << ")";
+  EXPECT_EQ(hart.exit_status, 0) << hart.console;
+  EXPECT_NE(hart.console.find("\nPASS: every result equal to Core\n"), std::string::npos) << hart.console;
+  EXPECT_NE(hart.console.find("refusal: N = 1001 trapped (mcause 7, mtval 0x50000024) and skipped; "
+                              "specular_check_error: cause 2 (N out of range), ERROR_ADDRESS 0x00000024\n"),
+            std::string::npos)
+      << hart.console;
+  EXPECT_EQ(hart.faults, 1u);
+  EXPECT_EQ(example_bus_faults, 1u);
+  EXPECT_EQ(hart.bad_resumes, 0u) << "the trap handler did not skip the faulting store";
+  EXPECT_NE(hart.console.find("row of 8 pixels (polled): pins 24-26 equal to Core\n"), std::string::npos);
+  EXPECT_EQ(example_interrupts, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Targets, FirmwareExamplePolled,
+                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync),
+                         example_host::kind_name);
+
+}  // namespace
+}  // namespace specular

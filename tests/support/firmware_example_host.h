@@ -6,7 +6,11 @@
 // it: the access is not done and example_trap(5 or 7, mepc, address) runs, whose return
 // must be the next instruction. In the interrupt build, example_sleep_unless syncs, waits
 // for done_irq's rising edge and calls example_trap with the machine external interrupt,
-// as a hart with done_irq on its external interrupt would. The console is a string.
+// as a hart with done_irq on its external interrupt would. With a PLIC (the example's
+// PLIC build), done_irq's rising edge sets the source pending in a small model of a
+// SiFive-layout PLIC at 0x0C00_0000 (source 1, context 0; riscv-vp's edge gateway), and
+// the hart takes the interrupt only while the source is pending, enabled and above the
+// threshold; a claim clears pending, a complete ends the service. The console is a string.
 // Included by exactly one file of each test program: it defines the C symbols main.c
 // expects of the platform.
 #ifndef SPECULAR_TESTS_SUPPORT_FIRMWARE_EXAMPLE_HOST_H
@@ -31,6 +35,7 @@ extern "C" {
 int example_main(void);
 std::uintptr_t example_trap(std::uintptr_t mcause, std::uintptr_t mepc, std::uintptr_t mtval);
 extern volatile std::uint32_t example_interrupts;
+extern volatile std::uint32_t example_spurious_interrupts;
 extern volatile std::uint32_t example_bus_faults;
 // The platform's (startup.S on the hart)
 void example_console_write(const char* text, std::size_t length);
@@ -61,6 +66,44 @@ inline std::string kind_name(const testing::TestParamInfo<Kind>& info) {
   return "unknown";
 }
 
+/// A PLIC as the firmware sees it: source 1, hart 0's machine context, SiFive's layout.
+struct Plic {
+  static constexpr std::uintptr_t base = 0x0C000000u, size = 0x400000u;
+  static constexpr std::uint32_t source = 1u;
+  std::uint32_t priority = 0, enable = 0, threshold = 0;
+  bool pending = false, in_service = false;
+  std::size_t claims = 0, completes = 0, claims_before_interrupts_on = 0, other_accesses = 0;
+  bool interrupt() const { return pending && (enable & (1u << source)) != 0u && priority > threshold; }
+  void access(tlm::tlm_command command, std::uintptr_t offset, std::uint32_t* word, bool interrupts_on) {
+    const bool read = command == tlm::TLM_READ_COMMAND;
+    std::uint32_t* reg = nullptr;
+    if (offset == 4u * source) reg = &priority;
+    if (offset == 0x2000u) reg = &enable;
+    if (offset == 0x200000u) reg = &threshold;
+    if (reg != nullptr) {
+      if (read) *word = *reg; else *reg = *word;
+      return;
+    }
+    if (offset == 0x200004u && read) {  // claim
+      *word = 0u;
+      if (!interrupt()) return;
+      pending = false;
+      in_service = true;
+      ++claims;
+      if (!interrupts_on) ++claims_before_interrupts_on;
+      *word = source;
+      return;
+    }
+    if (offset == 0x200004u && *word == source && in_service) {  // complete
+      in_service = false;
+      ++completes;
+      return;
+    }
+    ++other_accesses;
+    if (read) *word = 0u;
+  }
+};
+
 struct Hart : sc_core::sc_module {
   tlm_utils::simple_initiator_socket<Hart, 32> socket{"socket"};
   tlm_utils::tlm_quantumkeeper keeper;
@@ -68,10 +111,17 @@ struct Hart : sc_core::sc_module {
   std::string console;
   sc_core::sc_event rising_edge, never;
   std::size_t rising_edges = 0, edges_taken = 0, faults = 0, bad_resumes = 0, sleeps = 0;
+  bool with_plic = false;
+  /// The platform's memory interface syncs after each write to the IP (a remedy of
+  /// docs/integration.md section 10): done_irq's edges reach the PLIC before the next
+  /// instruction, instead of at the CPU's next sync (end of quantum, wfi).
+  bool sync_after_writes = false;
+  Plic plic;
   bool interrupts_on = false, halted = false, finished = false, gave_up = false;
   int exit_status = -1;
 
-  Hart(sc_core::sc_module_name name, Kind kind) : sc_module(name) {
+  Hart(sc_core::sc_module_name name, Kind kind, bool plic_wired, bool sync_writes)
+      : sc_module(name), with_plic(plic_wired), sync_after_writes(sync_writes) {
     SPECULAR_HAS_PROCESS(Hart);
     const sc_core::sc_time period(10, sc_core::SC_NS);
     switch (kind) {
@@ -86,6 +136,7 @@ struct Hart : sc_core::sc_module {
     target->on_done_irq([this](bool level) {
       if (!level) return;
       ++rising_edges;
+      if (with_plic) plic.pending = true;  // the gateway's edge
       rising_edge.notify();
     });
     tlm_utils::tlm_quantumkeeper::set_global_quantum(sc_core::sc_time(1, sc_core::SC_US));
@@ -94,6 +145,10 @@ struct Hart : sc_core::sc_module {
   }
 
   void access(tlm::tlm_command command, std::uintptr_t address, std::uint32_t* word) {
+    if (with_plic && address >= Plic::base && address < Plic::base + Plic::size) {
+      plic.access(command, address - Plic::base, word, interrupts_on);
+      return;
+    }
     tlm::tlm_generic_payload tx;
     tx.set_command(command);
     tx.set_address(address - ip_base);
@@ -106,7 +161,7 @@ struct Hart : sc_core::sc_module {
     socket->b_transport(tx, delay);
     keeper.set(delay);
     keeper.inc(sc_core::sc_time(2, sc_core::SC_NS));
-    if (keeper.need_sync()) keeper.sync();
+    if (keeper.need_sync() || (sync_after_writes && command == tlm::TLM_WRITE_COMMAND)) keeper.sync();
     if (tx.is_response_ok()) return;
     ++faults;  // the ISS's exception: load or store access fault, mtval the address
     const std::uintptr_t mepc = reinterpret_cast<std::uintptr_t>(faulting_store);
@@ -116,9 +171,12 @@ struct Hart : sc_core::sc_module {
   void sleep_unless(volatile std::uint32_t* flag) {
     ++sleeps;
     keeper.sync();  // wfi: the hart yields, the edges scheduled so far are delivered
+    std::size_t taken_here = 0;
     while (*flag == 0u) {
-      if (interrupts_on && rising_edges > edges_taken) {
+      const bool wanted = with_plic ? plic.interrupt() : rising_edges > edges_taken;
+      if (interrupts_on && wanted) {
         edges_taken = rising_edges;
+        if (++taken_here > 1000) park();  // a handler that never clears its source
         example_trap(machine_external_interrupt, reinterpret_cast<std::uintptr_t>(faulting_store), 0);
         continue;
       }
@@ -143,9 +201,9 @@ struct Hart : sc_core::sc_module {
 
 inline Hart* hart = nullptr;
 
-inline Hart& run_example(Kind kind) {
+inline Hart& run_example(Kind kind, bool plic_wired = false, bool sync_after_writes = false) {
   static std::unique_ptr<Hart> top;  // alive until exit, as SystemC wants
-  top = std::make_unique<Hart>("hart", kind);
+  top = std::make_unique<Hart>("hart", kind, plic_wired, sync_after_writes);
   hart = top.get();
   sc_core::sc_start();
   return *top;

@@ -29,10 +29,7 @@
 
 #include "specular/specular_driver.h"
 #include "specular/core.h"
-#include "specular/tlm/lt_target.h"
-#include "specular/tlm/pin_target.h"
-#include "specular/twin/rtl_sync_target.h"
-#include "specular/twin/rtl_target.h"
+#include "support/firmware_targets.h"
 
 namespace specular {
 namespace {
@@ -45,28 +42,9 @@ using sc_core::SC_NS;
 constexpr std::uintptr_t ip_base = 0x50000000u;
 const sc_time period(10, SC_NS);
 
-enum class Kind { lt, pin, rtl, rtl_sync };
-
-std::string kind_name(const testing::TestParamInfo<Kind>& info) {
-  switch (info.param) {
-    case Kind::lt: return "lt";
-    case Kind::pin: return "pin_keep";
-    case Kind::rtl: return "rtl";
-    case Kind::rtl_sync: return "rtl_sync";
-  }
-  return "unknown";
-}
-
-std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind, const Config& config) {
-  switch (kind) {
-    case Kind::lt: return std::make_unique<SpecularLtTarget>(name, config, period);
-    case Kind::pin:
-      return std::make_unique<SpecularPinTarget>(name, config, period, false, PinDelay::keep);
-    case Kind::rtl: return std::make_unique<SpecularRtlTarget>(name, config, period);
-    case Kind::rtl_sync: return std::make_unique<SpecularRtlSyncTarget>(name, config, period);
-  }
-  return nullptr;
-}
+using firmware_targets::Kind;
+using firmware_targets::kind_name;
+using firmware_targets::make_target;
 
 /// A CPU running the C driver: every access the driver makes becomes a b_transport at
 /// the quantum keeper's local time (1 µs quantum), plus 2 ns of "instructions" each.

@@ -25,10 +25,7 @@
 #include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "specular/specular_driver.h"
-#include "specular/tlm/lt_target.h"
-#include "specular/tlm/pin_target.h"
-#include "specular/twin/rtl_sync_target.h"
-#include "specular/twin/rtl_target.h"
+#include "firmware_targets.h"
 
 extern "C" {
 // main.c's
@@ -54,17 +51,8 @@ constexpr std::uintptr_t machine_external_interrupt = 0x8000000Bu;
 /// handler that skips it returns mepc + 4.
 alignas(4) inline const std::uint16_t faulting_store[2] = {0x2023u, 0x0000u};
 
-enum class Kind { lt, pin, rtl, rtl_sync };
-
-inline std::string kind_name(const testing::TestParamInfo<Kind>& info) {
-  switch (info.param) {
-    case Kind::lt: return "lt";
-    case Kind::pin: return "pin_keep";
-    case Kind::rtl: return "rtl";
-    case Kind::rtl_sync: return "rtl_sync";
-  }
-  return "unknown";
-}
+using firmware_targets::Kind;
+using firmware_targets::kind_name;
 
 /// A PLIC as the firmware sees it: source 1, hart 0's machine context, SiFive's layout.
 struct Plic {
@@ -123,15 +111,7 @@ struct Hart : sc_core::sc_module {
   Hart(sc_core::sc_module_name name, Kind kind, bool plic_wired, bool sync_writes)
       : sc_module(name), with_plic(plic_wired), sync_after_writes(sync_writes) {
     SPECULAR_HAS_PROCESS(Hart);
-    const sc_core::sc_time period(10, sc_core::SC_NS);
-    switch (kind) {
-      case Kind::lt: target = std::make_unique<SpecularLtTarget>("ip", Config{}, period); break;
-      case Kind::pin:
-        target = std::make_unique<SpecularPinTarget>("ip", Config{}, period, false, PinDelay::keep);
-        break;
-      case Kind::rtl: target = std::make_unique<SpecularRtlTarget>("ip", Config{}, period); break;
-      case Kind::rtl_sync: target = std::make_unique<SpecularRtlSyncTarget>("ip", Config{}, period); break;
-    }
+    target = firmware_targets::make_target("ip", kind, Config{});
     socket.bind(target->socket);
     target->on_done_irq([this](bool level) {
       if (!level) return;
@@ -207,6 +187,22 @@ inline Hart& run_example(Kind kind, bool plic_wired = false, bool sync_after_wri
   hart = top.get();
   sc_core::sc_start();
   return *top;
+}
+
+/// What every build must show: it returned 0 with its PASS line, and its refused store
+/// (N = 1001) trapped once, was skipped to the next instruction and was reported with its
+/// cause by specular_check_error.
+inline void expect_passed(const Hart& hart) {
+  EXPECT_TRUE(hart.finished) << "the example never returned (halted: " << hart.halted << ")";
+  EXPECT_EQ(hart.exit_status, 0) << hart.console;
+  EXPECT_NE(hart.console.find("\nPASS: every result equal to Core\n"), std::string::npos) << hart.console;
+  EXPECT_NE(hart.console.find("refusal: N = 1001 trapped (mcause 7, mtval 0x50000024) and skipped; "
+                              "specular_check_error: cause 2 (N out of range), ERROR_ADDRESS 0x00000024\n"),
+            std::string::npos)
+      << hart.console;
+  EXPECT_EQ(hart.faults, 1u);
+  EXPECT_EQ(example_bus_faults, 1u);
+  EXPECT_EQ(hart.bad_resumes, 0u) << "the trap handler did not skip the faulting store";
 }
 
 }  // namespace example_host

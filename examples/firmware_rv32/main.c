@@ -241,7 +241,8 @@ uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval) {
     case MCAUSE_STORE_PAGE_FAULT:
       /* An access the IP refused, as an initiator that turns an error response into an
        * exception reports it. Skip the instruction (a skipped load leaves its register as
-       * it was); specular_check_error then gives the cause. */
+       * it was); specular_check_error then gives the cause. A fault elsewhere is a bug. */
+      if (mtval - (uintptr_t)SPECULAR_BASE >= SPECULAR_MAP_SIZE) break;
       ++example_bus_faults;
       example_last_fault_cause = (uint32_t)mcause;
       example_last_fault_address = (uint32_t)mtval;
@@ -249,14 +250,17 @@ uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval) {
     case MCAUSE_ECALL_FROM_M:
       return mepc + instruction_length(mepc); /* a console or exit call the platform does not take */
     default:
-      say("FAIL: unexpected trap, mcause ");
-      say_hex((uint32_t)mcause);
-      say(" at ");
-      say_hex((uint32_t)mepc);
-      say("\n");
-      example_halt();
-      return mepc;
+      break;
   }
+  say("FAIL: unexpected trap, mcause ");
+  say_hex((uint32_t)mcause);
+  say(" at ");
+  say_hex((uint32_t)mepc);
+  say(", mtval ");
+  say_hex((uint32_t)mtval);
+  say("\n");
+  example_halt();
+  return mepc;
 }
 
 /* ---- the program ---------------------------------------------------------------- */

@@ -31,9 +31,9 @@ TEST_P(FirmwareExampleIrqPlic, SetsUpThePlicClaimsAndCompletesAndPasses) {
   example_host::expect_passed(hart);
   EXPECT_NE(hart.console.find("interrupt through the PLIC at 0x0c000000 source 1\n"), std::string::npos);
   EXPECT_NE(hart.console.find("pixels (by interrupt, "), std::string::npos);
-  const example_host::Plic& plic = hart.plic;
+  const firmware_targets::Plic& plic = hart.plic;
   EXPECT_GT(plic.priority, plic.threshold);
-  EXPECT_NE(plic.enable & (1u << example_host::Plic::source), 0u);
+  EXPECT_NE(plic.enable & (1u << firmware_targets::Plic::source), 0u);
   if (sync_after_writes) {
     EXPECT_GE(plic.claims_before_interrupts_on, 1u) << "the source left pending by polling was not claimed first";
   }

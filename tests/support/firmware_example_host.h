@@ -26,6 +26,7 @@
 
 #include "specular/specular_driver.h"
 #include "firmware_targets.h"
+#include "plic_model.h"
 
 extern "C" {
 // main.c's
@@ -54,43 +55,7 @@ alignas(4) inline const std::uint16_t faulting_store[2] = {0x2023u, 0x0000u};
 using firmware_targets::Kind;
 using firmware_targets::kind_name;
 
-/// A PLIC as the firmware sees it: source 1, hart 0's machine context, SiFive's layout.
-struct Plic {
-  static constexpr std::uintptr_t base = 0x0C000000u, size = 0x400000u;
-  static constexpr std::uint32_t source = 1u;
-  std::uint32_t priority = 0, enable = 0, threshold = 0;
-  bool pending = false, in_service = false;
-  std::size_t claims = 0, completes = 0, claims_before_interrupts_on = 0, other_accesses = 0;
-  bool interrupt() const { return pending && (enable & (1u << source)) != 0u && priority > threshold; }
-  void access(tlm::tlm_command command, std::uintptr_t offset, std::uint32_t* word, bool interrupts_on) {
-    const bool read = command == tlm::TLM_READ_COMMAND;
-    std::uint32_t* reg = nullptr;
-    if (offset == 4u * source) reg = &priority;
-    if (offset == 0x2000u) reg = &enable;
-    if (offset == 0x200000u) reg = &threshold;
-    if (reg != nullptr) {
-      if (read) *word = *reg; else *reg = *word;
-      return;
-    }
-    if (offset == 0x200004u && read) {  // claim
-      *word = 0u;
-      if (!interrupt()) return;
-      pending = false;
-      in_service = true;
-      ++claims;
-      if (!interrupts_on) ++claims_before_interrupts_on;
-      *word = source;
-      return;
-    }
-    if (offset == 0x200004u && *word == source && in_service) {  // complete
-      in_service = false;
-      ++completes;
-      return;
-    }
-    ++other_accesses;
-    if (read) *word = 0u;
-  }
-};
+using firmware_targets::Plic;
 
 struct Hart : sc_core::sc_module {
   tlm_utils::simple_initiator_socket<Hart, 32> socket{"socket"};

@@ -57,7 +57,7 @@ fi
 (cd "$work/prefix" && find . -type f | sort) >"$work/files.txt"
 sed -n '1,5s/^/   /p' "$work/files.txt"
 echo "   ... $(wc -l <"$work/files.txt") files"
-unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit(Firmware)?/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/([a-z_]+/[a-z0-9_]+\.(v|vh)|[a-z0-9_]+\.hex)|firmware/specular_driver\.c))$' \
+unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit(Firmware)?/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/([a-z_]+/[a-z0-9_]+\.(v|vh)|[a-z0-9_]+\.hex)|firmware/specular_driver\.c|firmware_rv32/(CMakeLists\.txt|[a-z_]+\.(c|h|S|ld))|toolchains/[a-z0-9-]+\.cmake))$' \
              "$work/files.txt" || true)
 if [[ -n "$unexpected" ]]; then
   echo "consumer_check: FAIL: the install holds more than the IP:" >&2
@@ -67,6 +67,8 @@ fi
 grep -q '^\./include/specular/specular\.h$' "$work/files.txt"
 grep -q '^\./lib[^/]*/libspecular_core\.a$' "$work/files.txt"  # SpecularUnit::core (issue 29)
 grep -q '^\./share/SpecularUnit/ip/specular_unit\.xml$' "$work/files.txt"  # IP-XACT (docs/ipxact.md)
+grep -q '^\./share/SpecularUnit/firmware_rv32/example_expected\.h$' "$work/files.txt"  # the example (issue 47)
+grep -q '^\./share/SpecularUnit/toolchains/rv32imac-picolibc\.cmake$' "$work/files.txt"
 # Every file the installed IP-XACT component names (relative to it) is installed; the
 # twin's headers and libraries only in a build with the RTL twin.
 while read -r named; do

@@ -277,7 +277,7 @@ compile_tb() {
     "$TB_FILE" "${files[@]}" > "$log" 2>&1
 }
 
-# ---- progress (issue 27): specular_tb's progress line (tools/run_support/progress.h) through
+# ---- progress (issue 27): specular_tb's progress line (run_support/progress.h) through
 # the specular_progress tool beside it, one line per period tried or per policy's
 # vectors, on standard error only when it is a terminal and --quiet is not given.
 progress_tool="$(dirname "$specular_tb")/specular_progress"

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "support/installed_package.h"
 #include "support/scratch.h"
@@ -72,6 +73,50 @@ TEST(FirmwarePackage, ARv32FirmwareBuildCrossCompilesTheInstalledDriver) {
   EXPECT_NE(build.out.find("riscv64-unknown-elf-gcc"), std::string::npos);
   EXPECT_NE(build.out.find("-march=rv32imac"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "build/libfirmware_app.a"));
+}
+
+// Issue 47: the bare-metal example as the package installs it
+// (share/SpecularUnit/firmware_rv32/, with the expected bits Core computed at build time),
+// built from the install prefix alone with the installed toolchain files: three RV32 ELFs
+// (polled, through a PLIC, straight to the hart) with rv32imac-picolibc.cmake, and the
+// checking program as a Cortex-M4 library with cortex-m4-newlib.cmake. The driver's
+// source is the installed one; no path of the source tree is used.
+TEST(FirmwarePackage, TheInstalledExampleBuildsWithTheInstalledToolchainFiles) {
+  const fs::path dir = scratch_subdir("example");
+  const fs::path prefix = install(dir);
+  const fs::path example = prefix / "share/SpecularUnit/firmware_rv32";
+  const fs::path toolchains = prefix / "share/SpecularUnit/toolchains";
+  ASSERT_TRUE(fs::exists(example / "example_expected.h")) << "the generated header is not installed";
+  struct Build {
+    const char* name;
+    const char* toolchain;
+    std::vector<std::string> products;
+  };
+  const Build builds[] = {
+      {"rv32", "rv32imac-picolibc.cmake",
+       {"firmware_rv32_poll.elf", "firmware_rv32_irq.elf", "firmware_rv32_irq_direct.elf"}},
+      {"cortex_m4", "cortex-m4-newlib.cmake",
+       {"libfirmware_rv32_poll.a", "libfirmware_rv32_irq.a", "libfirmware_rv32_irq_direct.a"}},
+  };
+  for (const Build& b : builds) {
+    const fs::path build_dir = dir / b.name;
+    const Outcome configure = run_command(
+        cmake() + " -S " + shell_quoted(example) + " -B " + shell_quoted(build_dir) +
+            " --toolchain " + shell_quoted(toolchains / b.toolchain) +
+            " -DCMAKE_PREFIX_PATH=" + shell_quoted(prefix) + no_systemc,
+        dir, std::string("configure_") + b.name);
+    ASSERT_EQ(configure.status, 0) << b.name << ":\n" << configure.out << configure.err;
+    const Outcome build =
+        run_command(cmake() + " --build " + shell_quoted(build_dir) + " --verbose", dir, std::string("build_") + b.name);
+    ASSERT_EQ(build.status, 0) << b.name << ":\n" << build.out << build.err;
+    for (const std::string& product : b.products)
+      EXPECT_TRUE(fs::exists(build_dir / product)) << b.name << ": no " << product;
+    EXPECT_NE(build.out.find((prefix / "share/SpecularUnit/firmware/specular_driver.c").string()), std::string::npos)
+        << b.name << ": the driver did not come from the install prefix";
+    for (const char* source : {"/examples/firmware_rv32/", "/firmware/src/", "/firmware/include/"})
+      EXPECT_EQ(build.out.find(std::string(SPECULAR_SOURCE_DIR) + source), std::string::npos)
+          << b.name << ": the build used the source tree's " << source;
+  }
 }
 
 }  // namespace

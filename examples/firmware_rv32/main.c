@@ -1,95 +1,369 @@
 /* A bare-metal RV32 program that shades pixels with the specular IP through the C driver
- * (firmware/include/specular/specular_driver.h), for a riscv-vp-like platform with the
- * IP's 32 KiB window at SPECULAR_BASE (docs/integration.md section 10). It leaves every
- * result in RAM (example_results, example_reg9, example_status: read them with the VP's
- * debugger or a memory dump) and exits with 0 when the driver reported success, else the
- * magnitude of the driver's error code. The expected bits are Core's: a host program on
- * SpecularUnit::core computes them for the same operands.
+ * (firmware/include/specular/specular_driver.h) and checks every result itself, for a
+ * riscv-vp-like platform with the IP's 32 KiB window at SPECULAR_BASE (docs/firmware.md,
+ * docs/integration.md section 10).
  *
- * Default: the driver polls STATUS.DONE (no interrupt wiring needed). Built with
- * -DEXAMPLE_WAIT_IRQ it waits by interrupt instead: done_irq must reach the hart's machine
- * external interrupt (riscv-vp: on_done_irq -> trigger/clear_external_interrupt, section
- * 10); the trap handler calls specular_irq_handler (acknowledge, set the flag) and the
- * driver sleeps in wfi between operations. */
+ * What it does, in order, reporting each step on the console (example_console_write):
+ *   1. binds the driver (ID, VERSION, CONFIG);
+ *   2. makes one access the IP refuses (N = 1001): on a platform that turns the error
+ *      response into a store access fault the trap handler skips the store; either way
+ *      specular_check_error must then report the refusal with cause N_OUT_OF_RANGE;
+ *   3. one operation, polled: pins 24-26 and register 9 after each pass;
+ *   4. a row of EXAMPLE_PIXELS pixels through the batch windows (polled, or by interrupt
+ *      in the interrupt builds).
+ * Every result is compared with example_expected.h, which the host computed with Core
+ * (the bit-accurate core) at build time; the first difference is named and ends the
+ * program. Exit status: 0 all equal; 1-9 the driver's error (minus its code); 10 the
+ * refusal not reported; 20 a result differs.
+ *
+ * Build options (-D):
+ *   SPECULAR_BASE=addr       the IP's base (default 0x50000000)
+ *   EXAMPLE_WAIT_IRQ         the row waits by interrupt, through a PLIC (SiFive/FE310
+ *                            layout): EXAMPLE_PLIC_BASE (default 0x0C000000),
+ *                            EXAMPLE_PLIC_SOURCE (done_irq's source, default 1),
+ *                            EXAMPLE_PLIC_CONTEXT (hart 0 machine mode: 0)
+ *   EXAMPLE_IRQ_DIRECT       with EXAMPLE_WAIT_IRQ: done_irq wired straight to the hart's
+ *                            machine external interrupt, no PLIC
+ *   EXAMPLE_UART_BASE=addr   the console is a byte-wide transmit register at addr
+ *                            (default: the write system call, which riscv-vp's
+ *                            --intercept-syscalls takes)
+ *   EXAMPLE_BUS              the driver's accessors are the platform's, from
+ *                            example_platform_bus() (default: none, volatile loads and
+ *                            stores); the host test (tests/test_firmware_example_*.cpp)
+ *                            routes them to a TLM target */
 #include <stddef.h>
 #include <stdint.h>
 
 #include "specular/specular_driver.h"
+#include "example_expected.h"
+#include "example_operands.h"
 
 #ifndef SPECULAR_BASE
 #define SPECULAR_BASE 0x50000000u
 #endif
+#ifndef EXAMPLE_PLIC_BASE
+#define EXAMPLE_PLIC_BASE 0x0C000000u
+#endif
+#ifndef EXAMPLE_PLIC_SOURCE
+#define EXAMPLE_PLIC_SOURCE 1u
+#endif
+#ifndef EXAMPLE_PLIC_CONTEXT
+#define EXAMPLE_PLIC_CONTEXT 0u
+#endif
 
-#define PIXELS 8u
 #define MCAUSE_MACHINE_EXTERNAL 0x8000000Bu
+#define MCAUSE_LOAD_ACCESS_FAULT 5u
+#define MCAUSE_STORE_ACCESS_FAULT 7u
+#define MCAUSE_ECALL_FROM_M 11u
+#define MCAUSE_LOAD_PAGE_FAULT 13u   /* riscv-vp reports a failed bus transaction so */
+#define MCAUSE_STORE_PAGE_FAULT 15u
 
-/* What the program leaves in RAM. */
-volatile int32_t example_results[3u * PIXELS];  /* pins 24-26 of each pixel */
-volatile int64_t example_reg9[2];               /* register 9 after each pass, one operation */
-volatile int32_t example_status = 1;            /* 0 when done, else a specular_status */
-volatile uint32_t example_interrupts;           /* done interrupts taken */
+#define EXIT_REFUSAL_NOT_REPORTED 10
+#define EXIT_RESULT_DIFFERS 20
+
+/* What the program leaves in RAM too (for a debugger or a memory dump). */
+volatile int32_t example_results[3u * EXAMPLE_PIXELS]; /* pins 24-26 of each pixel */
+volatile int64_t example_reg9[2];                      /* register 9 after each pass, one operation */
+volatile int32_t example_status = 1;                   /* the exit status, once known */
+volatile uint32_t example_interrupts;                  /* done interrupts taken */
+volatile uint32_t example_spurious_interrupts;         /* ... and taken with STATUS.DONE clear */
+volatile uint32_t example_bus_faults;                  /* load/store faults skipped */
+volatile uint32_t example_last_fault_cause;            /* mcause of the last one */
+volatile uint32_t example_last_fault_address;          /* mtval of the last one */
 
 static specular_dev dev;
+
+#ifdef EXAMPLE_BUS
+const specular_bus* example_platform_bus(void);
+#endif
 
 /* startup.S */
 void example_halt(void);
 void example_interrupts_on(void);
 void example_sleep_unless(volatile uint32_t* flag);
+void example_console_write(const char* text, size_t length);
 
-/* Called by startup.S's trap entry for every trap. */
-void example_trap(uint32_t mcause);
-void example_trap(uint32_t mcause) {
-  if (mcause == MCAUSE_MACHINE_EXTERNAL) {
-    ++example_interrupts;
-    specular_irq_handler(&dev);  /* acknowledges (the level falls) and sets dev.irq_pending */
+/* ---- console: a short report ---------------------------------------------------- */
+
+#ifdef EXAMPLE_UART_BASE
+void example_console_write(const char* text, size_t length) {
+  size_t i;
+  for (i = 0; i < length; ++i) *(volatile uint8_t*)(uintptr_t)EXAMPLE_UART_BASE = (uint8_t)text[i];
+}
+#endif
+
+static void say(const char* text) {
+  size_t length = 0;
+  while (text[length] != '\0') ++length;
+  example_console_write(text, length);
+}
+
+static void say_signed(int64_t value) {
+  char digits[24];
+  size_t at = sizeof digits;
+  uint64_t magnitude = value < 0 ? (uint64_t)0 - (uint64_t)value : (uint64_t)value;
+  do {
+    digits[--at] = (char)('0' + (int)(magnitude % 10u));
+    magnitude /= 10u;
+  } while (magnitude != 0u);
+  if (value < 0) digits[--at] = '-';
+  example_console_write(digits + at, sizeof digits - at);
+}
+
+static void say_hex(uint32_t value) {
+  char digits[10];
+  int i;
+  digits[0] = '0';
+  digits[1] = 'x';
+  for (i = 0; i < 8; ++i) digits[2 + i] = "0123456789abcdef"[(value >> (28 - 4 * i)) & 0xFu];
+  example_console_write(digits, sizeof digits);
+}
+
+static int driver_failed(const char* step, int status) {
+  say("FAIL: ");
+  say(step);
+  say(": ");
+  say(specular_strerror(status));
+  say("\n");
+  return status < 0 ? -status : status;
+}
+
+/* Compares one result with Core's; names the first difference. */
+static int same(const char* what, int64_t index, const char* part, int64_t got, int64_t expected) {
+  if (got == expected) return 1;
+  say("FAIL: ");
+  say(what);
+  if (index >= 0) {
+    say(" ");
+    say_signed(index);
+  }
+  say(" ");
+  say(part);
+  say(": IP ");
+  say_signed(got);
+  say(", Core ");
+  say_signed(expected);
+  say("\n");
+  return 0;
+}
+
+/* ---- interrupts ----------------------------------------------------------------- */
+
+#if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
+/* The PLIC's registers (SiFive's layout, as FE310's and riscv-vp's PLIC): offsets. */
+#define PLIC_PRIORITY (4u * EXAMPLE_PLIC_SOURCE)
+#define PLIC_ENABLE (0x2000u + 0x80u * EXAMPLE_PLIC_CONTEXT + 4u * (EXAMPLE_PLIC_SOURCE / 32u))
+#define PLIC_THRESHOLD (0x200000u + 0x1000u * EXAMPLE_PLIC_CONTEXT)
+#define PLIC_CLAIM (0x200004u + 0x1000u * EXAMPLE_PLIC_CONTEXT) /* read: claim; write: complete */
+
+/* Volatile loads and stores, or the platform's accessors (the host test's PLIC model). */
+static uint32_t plic_read(uint32_t offset) {
+  const uintptr_t address = (uintptr_t)EXAMPLE_PLIC_BASE + offset;
+#ifdef EXAMPLE_BUS
+  const specular_bus* bus = example_platform_bus();
+  if (bus != NULL && bus->read32 != NULL) return bus->read32(bus->context, address);
+#endif
+  return *(volatile uint32_t*)address;
+}
+static void plic_write(uint32_t offset, uint32_t value) {
+  const uintptr_t address = (uintptr_t)EXAMPLE_PLIC_BASE + offset;
+#ifdef EXAMPLE_BUS
+  const specular_bus* bus = example_platform_bus();
+  if (bus != NULL && bus->write32 != NULL) {
+    bus->write32(bus->context, address, value);
     return;
   }
-  example_halt();  /* an exception (or an exit call the platform does not take) */
+#endif
+  *(volatile uint32_t*)address = value;
 }
+
+/* Priority, threshold and enable, then every source already pending claimed and
+ * completed: done_irq rose at the end of each polled operation, so the PLIC's gateway
+ * holds our source pending before any interrupt is wanted. Machine interrupts are still
+ * off (mstatus.MIE), so nothing is taken here. */
+void example_plic_on(void);
+void example_plic_on(void) {
+  uint32_t id;
+  plic_write(PLIC_PRIORITY, 1u);
+  plic_write(PLIC_THRESHOLD, 0u);
+  plic_write(PLIC_ENABLE, plic_read(PLIC_ENABLE) | 1u << (EXAMPLE_PLIC_SOURCE % 32u));
+  while ((id = plic_read(PLIC_CLAIM)) != 0u) plic_write(PLIC_CLAIM, id);
+}
+#endif
 
 #ifdef EXAMPLE_WAIT_IRQ
 /* The driver's idle hook: sleep until the interrupt (the flag is tested with interrupts
  * masked, in example_sleep_unless). */
 static void sleep_until_interrupt(void* context) {
-  example_sleep_unless(&((specular_dev*)context)->irq_pending);
+  (void)context; /* the platform's, if it gave accessors */
+  example_sleep_unless(&dev.irq_pending);
 }
 #endif
 
-int main(void);
-int main(void) {
-  /* One highlight row: cos from 1.0 down, n = 40, light (255, 200, 100). */
-  static const uint32_t cos[PIXELS] = {65536u, 65400u, 65000u, 64500u, 63000u, 60000u, 50000u, 30000u};
-  static const uint32_t rgb[3] = {255u, 200u, 100u};
-  static int32_t out[3u * PIXELS];
-  specular_operands one;
+/* A done interrupt counts only while STATUS.DONE is set. One with DONE clear is spurious:
+ * an edge a decoupled platform delivers late (at the CPU's next sync), from an operation
+ * already polled and acknowledged, or a line still high at mret under a long quantum
+ * (docs/integration.md section 10). */
+static void done_interrupt(void) {
+  if ((specular_read(&dev, SPECULAR_STATUS_OFFSET) & SPECULAR_STATUS_DONE_MASK) == 0u) {
+    ++example_spurious_interrupts;
+    return;
+  }
+  ++example_interrupts;
+  specular_irq_handler(&dev); /* acknowledges (done_irq falls) and sets dev.irq_pending */
+}
+
+static void external_interrupt(void) {
+#if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
+  const uint32_t id = plic_read(PLIC_CLAIM);
+  if (id == EXAMPLE_PLIC_SOURCE) done_interrupt();
+  if (id != 0u) plic_write(PLIC_CLAIM, id); /* complete: the gateway takes the source again */
+#else
+  done_interrupt(); /* the level falls with the acknowledging store */
+#endif
+}
+
+/* The length of the instruction at `address`: 2 for a compressed one (low bits not 11). */
+static uintptr_t instruction_length(uintptr_t address) {
+  return (*(const volatile uint16_t*)address & 3u) == 3u ? 4u : 2u;
+}
+
+/* Called by startup.S's trap entry for every trap; returns where to resume (mepc). */
+uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval);
+uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval) {
+  switch (mcause) {
+    case MCAUSE_MACHINE_EXTERNAL:
+      external_interrupt();
+      return mepc;
+    case MCAUSE_LOAD_ACCESS_FAULT:
+    case MCAUSE_STORE_ACCESS_FAULT:
+    case MCAUSE_LOAD_PAGE_FAULT:
+    case MCAUSE_STORE_PAGE_FAULT:
+      /* An access the IP refused, as an initiator that turns an error response into an
+       * exception reports it. Skip the instruction (a skipped load leaves its register as
+       * it was); specular_check_error then gives the cause. A fault elsewhere is a bug. */
+      if (mtval - (uintptr_t)SPECULAR_BASE >= SPECULAR_MAP_SIZE) break;
+      ++example_bus_faults;
+      example_last_fault_cause = (uint32_t)mcause;
+      example_last_fault_address = (uint32_t)mtval;
+      return mepc + instruction_length(mepc);
+    case MCAUSE_ECALL_FROM_M:
+      return mepc + instruction_length(mepc); /* a console or exit call the platform does not take */
+    default:
+      break;
+  }
+  say("FAIL: unexpected trap, mcause ");
+  say_hex((uint32_t)mcause);
+  say(" at ");
+  say_hex((uint32_t)mepc);
+  say(", mtval ");
+  say_hex((uint32_t)mtval);
+  say("\n");
+  example_halt();
+  return mepc;
+}
+
+/* ---- the program ---------------------------------------------------------------- */
+
+static int run(void) {
+  static const uint32_t row_cos[EXAMPLE_PIXELS] = EXAMPLE_ROW_COS;
+  static const uint32_t row_rgb[3] = EXAMPLE_ROW_RGB;
+  static const int32_t expected_row[3u * EXAMPLE_PIXELS] = EXAMPLE_EXPECTED_ROW_OUT;
+  static const int32_t expected_one[3] = EXAMPLE_EXPECTED_ONE_OUT;
+  static const char* const channel[3] = {"R (pin 24)", "G (pin 25)", "B (pin 26)"};
+  static int32_t out[3u * EXAMPLE_PIXELS];
+  const specular_operands one = {EXAMPLE_ONE_COS, EXAMPLE_ONE_N, EXAMPLE_ONE_RGB};
   specular_result result;
   size_t i;
+  int ch;
   int status;
-#ifdef EXAMPLE_WAIT_IRQ
-  specular_bus bus = {NULL, NULL, NULL, NULL, sleep_until_interrupt, NULL};
-  bus.context = &dev;  /* read32/write32 NULL: volatile accesses, only the idle hook set */
-  status = specular_init(&dev, (uintptr_t)SPECULAR_BASE, &bus);
-  dev.wait_mode = SPECULAR_WAIT_IRQ;
-  dev.poll_limit = 0u;  /* wfi wakes on the interrupt: no need to count */
-  example_interrupts_on();
+
+#ifdef EXAMPLE_BUS
+  status = specular_init(&dev, (uintptr_t)SPECULAR_BASE, example_platform_bus()); /* the platform's accessors */
 #else
   status = specular_init(&dev, (uintptr_t)SPECULAR_BASE, NULL); /* volatile accesses, polling */
 #endif
-  if (status == SPECULAR_OK) {
-    one.cos = 64500u;
-    one.n = 40u;
-    one.rgb[0] = 255u;
-    one.rgb[1] = 200u;
-    one.rgb[2] = 100u;
-    status = specular_compute(&dev, &one, &result);
+  if (status != SPECULAR_OK) return driver_failed("specular_init", status);
+
+  /* A refused access: N = 1001 written raw (the driver's own calls check it first). */
+  specular_write(&dev, SPECULAR_N_OFFSET, SPECULAR_N_MAX + 1u);
+  status = specular_check_error(&dev);
+  say("refusal: N = 1001 ");
+  if (example_bus_faults != 0u) {
+    say("trapped (mcause ");
+    say_signed(example_last_fault_cause);
+    say(", mtval ");
+    say_hex(example_last_fault_address);
+    say(") and skipped; ");
+  } else {
+    say("completed without a trap; ");
   }
-  if (status == SPECULAR_OK) {
-    example_reg9[0] = result.reg9_pass1;
-    example_reg9[1] = result.reg9_pass2;
-    status = specular_shade(&dev, 40u, rgb, cos, PIXELS, out);
+  if (status != SPECULAR_ERR_REFUSED || dev.cause != SPECULAR_STATUS_CAUSE_N_OUT_OF_RANGE) {
+    say("FAIL: specular_check_error did not report cause N_OUT_OF_RANGE\n");
+    return EXIT_REFUSAL_NOT_REPORTED;
   }
-  if (status == SPECULAR_OK)
-    for (i = 0; i < 3u * PIXELS; ++i) example_results[i] = out[i];
-  example_status = status;
-  return status < 0 ? -status : status;
+  say("specular_check_error: cause ");
+  say_signed(dev.cause);
+  say(" (N out of range), ERROR_ADDRESS ");
+  say_hex(dev.error_address);
+  say("\n");
+
+  status = specular_compute(&dev, &one, &result);
+  if (status != SPECULAR_OK) return driver_failed("specular_compute", status);
+  example_reg9[0] = result.reg9_pass1;
+  example_reg9[1] = result.reg9_pass2;
+  for (ch = 0; ch < 3; ++ch)
+    if (!same("one operation", -1, channel[ch], result.out[ch], expected_one[ch])) return EXIT_RESULT_DIFFERS;
+  if (!same("one operation", -1, "register 9 after pass 1", result.reg9_pass1, EXAMPLE_EXPECTED_ONE_REG9_PASS1) ||
+      !same("one operation", -1, "register 9 after pass 2", result.reg9_pass2, EXAMPLE_EXPECTED_ONE_REG9_PASS2))
+    return EXIT_RESULT_DIFFERS;
+  say("one operation (polled): pins 24-26 and register 9 equal to Core\n");
+
+#ifdef EXAMPLE_WAIT_IRQ
+  dev.bus.idle = sleep_until_interrupt; /* the accessors stay: volatile, or the platform's */
+#ifndef EXAMPLE_IRQ_DIRECT
+  example_plic_on();
+#endif
+  dev.wait_mode = SPECULAR_WAIT_IRQ;
+  dev.poll_limit = 0u; /* wfi wakes on the interrupt: no need to count */
+  example_interrupts_on();
+#endif
+  status = specular_shade(&dev, EXAMPLE_ROW_N, row_rgb, row_cos, EXAMPLE_PIXELS, out);
+  if (status != SPECULAR_OK) return driver_failed("specular_shade", status);
+  for (i = 0; i < 3u * EXAMPLE_PIXELS; ++i) {
+    example_results[i] = out[i];
+    if (!same("pixel", (int64_t)(i / 3u), channel[i % 3u], out[i], expected_row[i])) return EXIT_RESULT_DIFFERS;
+  }
+#ifdef EXAMPLE_WAIT_IRQ
+  say("row of ");
+  say_signed(EXAMPLE_PIXELS);
+  say(" pixels (by interrupt, ");
+  say_signed(example_interrupts);
+  say(" taken): pins 24-26 equal to Core\n");
+#else
+  say("row of ");
+  say_signed(EXAMPLE_PIXELS);
+  say(" pixels (polled): pins 24-26 equal to Core\n");
+#endif
+  return 0;
+}
+
+int main(void);
+int main(void) {
+  say("specular example: IP at ");
+  say_hex((uint32_t)SPECULAR_BASE);
+#if defined(EXAMPLE_WAIT_IRQ) && defined(EXAMPLE_IRQ_DIRECT)
+  say(", interrupt straight to the hart\n");
+#elif defined(EXAMPLE_WAIT_IRQ)
+  say(", interrupt through the PLIC at ");
+  say_hex((uint32_t)EXAMPLE_PLIC_BASE);
+  say(" source ");
+  say_signed(EXAMPLE_PLIC_SOURCE);
+  say("\n");
+#else
+  say(", polled\n");
+#endif
+  example_status = run();
+  say(example_status == 0 ? "PASS: every result equal to Core\n" : "FAIL\n");
+  return example_status;
 }

@@ -2,9 +2,11 @@
  * _start sets gp and sp, points mtvec at trap_entry, clears .bss, calls main, then exits
  * with main's value through the exit system call (ecall with a7 = 93, a0 = status: what
  * riscv-vp's tiny32 takes with --intercept-syscalls, and newlib/picolibc's number on
- * RISC-V). On a platform that does not take the call, the ecall traps and example_trap
- * halts. The CSR helpers the interrupt-driven build uses are here too, so that main.c
- * stays plain C99. */
+ * RISC-V). On a platform that does not take the call, the ecall traps, example_trap
+ * skips it and the program halts in wfi. The console is the write system call (a7 = 64,
+ * fd 1), taken the same way; a weak symbol, so that a build with a UART replaces it. The
+ * CSR helpers the interrupt-driven build uses are here too, so that main.c stays plain
+ * C99. */
   .option push
   .option arch, +zicsr  /* newer binutils name no CSR instruction under rv32imac alone */
 
@@ -38,7 +40,8 @@ example_halt:
   j 3b
 
   .text
-/* Every trap: the caller-saved registers kept, example_trap(mcause) called, mret. */
+/* Every trap: the caller-saved registers kept, example_trap(mcause, mepc, mtval) called,
+ * and mret to the address it returns (mepc itself, or past a faulting access it skips). */
   .align 2
 trap_entry:
   addi sp, sp, -64
@@ -59,7 +62,10 @@ trap_entry:
   sw t5, 56(sp)
   sw t6, 60(sp)
   csrr a0, mcause
+  csrr a1, mepc
+  csrr a2, mtval
   call example_trap
+  csrw mepc, a0
   lw ra, 0(sp)
   lw t0, 4(sp)
   lw t1, 8(sp)
@@ -78,6 +84,16 @@ trap_entry:
   lw t6, 60(sp)
   addi sp, sp, 64
   mret
+
+/* void example_console_write(const char* text, size_t length): write(1, text, length). */
+  .weak example_console_write
+example_console_write:
+  mv a2, a1
+  mv a1, a0
+  li a0, 1
+  li a7, 64
+  ecall
+  ret
 
 /* void example_interrupts_on(void): machine external interrupts on (mie.MEIE, mstatus.MIE). */
   .globl example_interrupts_on

@@ -189,13 +189,18 @@ static int shade_chunk(specular_dev* dev, const uint32_t* cos, size_t k, int32_t
     dev->bus.write_block(dev->bus.context, dev->base + SPECULAR_BATCH_COS_OFFSET, cos, k);
     status = specular_wait(dev);
     if (status != SPECULAR_OK) return status;
-  } else {  /* word by word: each store runs one operation; wait before the next */
+  } else {
+    /* Word by word (a CPU without DMA): each store runs one operation and completes when
+     * the operation does (its latency is in the store's response), so the stores go back
+     * to back and the driver waits once, after the last. That wait reads STATUS (or, by
+     * interrupt, checks STATUS.ERROR once), so a store refused on the way, as busy or out
+     * of range, is still reported. Decision: docs/decisions.md, "Batches from a CPU". */
     for (i = 0; i < k; ++i) {
-      dev->irq_pending = 0u;
+      if (i + 1u == k) dev->irq_pending = 0u; /* the last operation's interrupt is the one */
       reg_write(dev, SPECULAR_BATCH_COS_OFFSET + 4u * (uint32_t)i, cos[i]);
-      status = specular_wait(dev);
-      if (status != SPECULAR_OK) return status;
     }
+    status = specular_wait(dev);
+    if (status != SPECULAR_OK) return status;
   }
   if (dev->bus.read_block != NULL) {
     /* The window's words are the pins' 32-bit two's complement codes. */

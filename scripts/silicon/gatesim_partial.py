@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Partial results of a sharded gate-level run (scripts/gatesim.sh --shard I/N --partial F)
 and their merge (scripts/gatesim.sh --merge), with specular_tb --merge's semantics
-(tools/run_support/partial_set.cpp, docs/farm.md).
+(run_support/partial_set.cpp, docs/farm.md).
 
   gatesim_partial.py write OUT_DIR PARTIAL      (gatesim.sh, at the end of a shard's run)
   gatesim_partial.py merge [--output DIR] [--partial FILE] PARTIAL...

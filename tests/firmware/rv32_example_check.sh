@@ -3,9 +3,10 @@
 # RISC-V executable, soft-float ilp32, entered at 0x0 (riscv-vp tiny32's RAM start) by
 # _start, holding main, the trap handler, the driver's entry points and the results'
 # symbols in RAM.
-# Usage: rv32_example_check.sh ELF
+# Usage: rv32_example_check.sh ELF [poll|irq|irq_direct]
 set -euo pipefail
-elf=${1:?usage: rv32_example_check.sh ELF}
+elf=${1:?usage: rv32_example_check.sh ELF [poll|irq|irq_direct]}
+variant=${2:-poll}
 readelf=riscv64-unknown-elf-readelf
 nm=riscv64-unknown-elf-nm
 command -v "$readelf" >/dev/null || { echo "rv32_example_check: $readelf not found: install gcc-riscv64-unknown-elf (binutils-riscv64-unknown-elf)" >&2; exit 1; }
@@ -19,9 +20,15 @@ grep -Eq 'Entry point address:[[:space:]]+0x0$' <<<"$header" || fail "entry is n
 grep -Eq 'Flags:.*soft-float ABI' <<<"$header" || fail "not the ilp32 (soft-float) ABI"
 symbols=$("$nm" "$elf")
 for symbol in _start main example_trap specular_init specular_compute specular_shade specular_irq_handler \
-              example_results example_status; do
+              example_results example_status example_console_write example_bus_faults; do
   grep -Eq "^[0-9a-f]+ [A-Za-z] $symbol\$" <<<"$symbols" || fail "symbol $symbol missing"
 done
+# The interrupt build through a PLIC claims and completes; the others have no PLIC code.
+if [[ $variant == irq ]]; then
+  grep -Eq "^[0-9a-f]+ [A-Za-z] example_plic_on\$" <<<"$symbols" || fail "the PLIC build has no example_plic_on"
+else
+  grep -Eq "^[0-9a-f]+ [A-Za-z] example_plic_on\$" <<<"$symbols" && fail "the $variant build has example_plic_on"
+fi
 start=$(awk '$3 == "_start" {print $1}' <<<"$symbols")
 [[ $start == 00000000 ]] || fail "_start at 0x$start, not at the entry"
 echo "rv32_example_check: $elf: RV32 ilp32 executable, entry _start at 0x0, main and the driver linked"

@@ -5,7 +5,7 @@ C++ (each folder's rank; a file may include only headers of its own rank or lowe
   0 modules/            the model: blocks, core, TLM, references (installed headers)
   0 firmware/           the C header and driver (no C++ at all)
   1 twin/               the RTL verilated, behind the model's interfaces
-  2 tools/run_support/  what specular_tb and the tools share: partials, shards, progress
+  2 run_support/        what specular_tb and the tools share: partials, shards, progress
   3 testbench/          specular_tb
   4 tools/NAME/         the other commands
   5 bench/ fuzz/ examples/ tests/   users of all of the above
@@ -19,7 +19,7 @@ import os
 import re
 import sys
 
-CPP_RANKS = [("modules/", 0), ("firmware/", 0), ("twin/", 1), ("tools/run_support/", 2),
+CPP_RANKS = [("modules/", 0), ("firmware/", 0), ("twin/", 1), ("run_support/", 2),
              ("testbench/", 3), ("tools/", 4), ("bench/", 5), ("fuzz/", 5), ("examples/", 5),
              ("tests/", 5)]
 RTL_RANKS = [("rtl/primitives/", 0), ("rtl/device/", 1), ("rtl/design_space/", 2),
@@ -37,7 +37,7 @@ def rank_of(rel, ranks):
 
 def main(root):
     files = []
-    for top in ("modules", "firmware", "twin", "tools", "testbench", "bench", "fuzz", "examples", "tests", "rtl"):
+    for top in ("modules", "firmware", "twin", "run_support", "tools", "testbench", "bench", "fuzz", "examples", "tests", "rtl"):
         for d, _, names in os.walk(os.path.join(root, top)):
             files += [os.path.relpath(os.path.join(d, n), root) for n in names]
     by_name = {}  # a bare include's candidates: every header of that name

@@ -49,10 +49,12 @@ typedef enum specular_status {
 } specular_status;
 
 /** Replaceable bus accessors. `address` is the full address (base + offset). read_block
- * and write_block may be NULL: the driver then uses read32/write32 word by word (and,
- * for BATCH_COS, waits for each operation before the next word: a word written while
- * an operation is in flight would be refused as busy). A block write to BATCH_COS runs
- * `count` operations in one transaction (a burst), as a DMA engine's would. */
+ * and write_block may be NULL: the driver then uses read32/write32 word by word. Each
+ * BATCH_COS store runs one operation and completes when it does (the IP's latency is in
+ * the store's response), so a chunk's stores go back to back and the driver waits once
+ * after the last (a store that met an operation in flight, on a bus that answers writes
+ * early, is refused as busy and reported). A block write to BATCH_COS runs `count`
+ * operations in one transaction (a burst), as a DMA engine's would. */
 typedef struct specular_bus {
   /** Reads the 32-bit word at `address`; NULL (with write32): volatile loads. */
   uint32_t (*read32)(void* context, uintptr_t address);

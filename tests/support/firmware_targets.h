@@ -1,0 +1,48 @@
+// The four TLM targets a firmware test runs the C driver against (issues 35, 47): lt,
+// pin with PinDelay::keep (what a riscv-vp-style initiator accepts), rtl and rtl-sync,
+// each built with the default 10 ns clock; a name for each as GoogleTest's parameter.
+#ifndef SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
+#define SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
+
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "specular/tlm/lt_target.h"
+#include "specular/tlm/pin_target.h"
+#include "specular/twin/rtl_sync_target.h"
+#include "specular/twin/rtl_target.h"
+
+namespace specular {
+namespace firmware_targets {
+
+enum class Kind { lt, pin, rtl, rtl_sync };
+
+inline std::string target_name(Kind kind) {
+  switch (kind) {
+    case Kind::lt: return "lt";
+    case Kind::pin: return "pin_keep";
+    case Kind::rtl: return "rtl";
+    case Kind::rtl_sync: return "rtl_sync";
+  }
+  return "unknown";
+}
+
+inline std::string kind_name(const testing::TestParamInfo<Kind>& info) { return target_name(info.param); }
+
+inline std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind, const Config& config) {
+  const sc_core::sc_time period(10, sc_core::SC_NS);
+  switch (kind) {
+    case Kind::lt: return std::make_unique<SpecularLtTarget>(name, config, period);
+    case Kind::pin: return std::make_unique<SpecularPinTarget>(name, config, period, false, PinDelay::keep);
+    case Kind::rtl: return std::make_unique<SpecularRtlTarget>(name, config, period);
+    case Kind::rtl_sync: return std::make_unique<SpecularRtlSyncTarget>(name, config, period);
+  }
+  return nullptr;
+}
+
+}  // namespace firmware_targets
+}  // namespace specular
+
+#endif  // SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H

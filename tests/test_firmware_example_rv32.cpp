@@ -1,0 +1,116 @@
+// The bare-metal example's ELF itself (issue 47), as ctest's firmware_rv32_example_elf_*
+// links it, run on a small RV32IMC hart (tests/support/rv32_hart.h: RAM at 0, the IP at
+// 0x5000_0000, riscv-vp's intercepted write and exit, error responses as access faults)
+// against the lt and rtl-sync targets: polled, through a PLIC (a model at 0x0C00_0000,
+// source 1), and with done_irq straight to the hart. Each must exit 0 having printed its
+// PASS line, its refused store trapped once (mcause 7, mtval 0x50000024) and skipped, and
+// by interrupt at least one interrupt taken. This is not riscv-vp: it is an interpreter
+// of the instructions the example uses, so that the shipped program, startup and trap
+// entry included, is run somewhere; firmware_rv32_example_run_* runs it on a real VP.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <string>
+#include <tuple>
+
+#include "support/rv32_hart.h"
+#include "support/scratch.h"
+#include "support/installed_package.h"
+#include "support/subprocess.h"
+
+namespace specular {
+namespace {
+
+using firmware_targets::Kind;
+using testing_support::run_command;
+using testing_support::scratch_subdir;
+using testing_support::shell_quoted;
+
+/// Links the example as tests/firmware/CMakeLists.txt does; returns the ELF's path.
+std::filesystem::path link_example(const std::string& variant) {
+  const std::filesystem::path dir = scratch_subdir("elf");
+  const std::string source = SPECULAR_SOURCE_DIR, example = source + "/examples/firmware_rv32";
+  std::string defines;
+  if (variant != "poll") defines += " -DEXAMPLE_WAIT_IRQ";
+  if (variant == "irq_direct") defines += " -DEXAMPLE_IRQ_DIRECT";
+  const std::filesystem::path elf = dir / "firmware_rv32.elf";
+  const auto outcome = run_command(
+      "riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 --specs=picolibc.specs -std=c99 -Wall -Wextra"
+      " -Wpedantic -Werror -ffreestanding -Os -nostartfiles -Wl,--no-warn-rwx-segments -T " +
+          shell_quoted(example + "/link.ld") + " -I" + shell_quoted(source + "/firmware/include") + " -I" +
+          shell_quoted(example) + " -I" + shell_quoted(SPECULAR_EXAMPLE_EXPECTED_DIR) + defines + " " +
+          shell_quoted(example + "/startup.S") + " " + shell_quoted(example + "/main.c") + " " +
+          shell_quoted(source + "/firmware/src/specular_driver.c") + " -o " + shell_quoted(elf.string()),
+      dir, "link");
+  EXPECT_EQ(outcome.status, 0) << "(riscv64-unknown-elf-gcc and picolibc-riscv64-unknown-elf are in "
+                                  "scripts/setup.sh)\n" << outcome.out << outcome.err;
+  return elf;
+}
+
+class FirmwareExampleRv32 : public testing::TestWithParam<std::tuple<Kind, std::string>> {};
+
+TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
+  const Kind kind = std::get<0>(GetParam());
+  const std::string variant = std::get<1>(GetParam());
+  const std::filesystem::path elf = link_example(variant);
+  ASSERT_TRUE(std::filesystem::exists(elf));
+  static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", kind, variant == "irq", elf.string());
+  // The instructions specular_shade takes for the row (issue 47: batches from a CPU).
+  const auto nm = run_command("riscv64-unknown-elf-nm " + shell_quoted(elf), elf.parent_path(), "nm");
+  const std::size_t at = nm.out.find(" T specular_shade\n");
+  if (at != std::string::npos && at >= 8) hart->probe_entry = static_cast<std::uint32_t>(std::stoul(nm.out.substr(at - 8, 8), nullptr, 16));
+  sc_core::sc_start();
+  std::cout << hart->console << "(" << hart->instructions << " instructions, " << hart->interrupts
+            << " interrupts, " << hart->faults << " faults; specular_shade: " << hart->probe_instructions
+            << " instructions for the row)\n";
+  EXPECT_TRUE(hart->exited) << "the program did not exit: " << hart->error << " at pc " << hart->pc;
+  EXPECT_EQ(hart->exit_code, 0) << hart->console;
+  EXPECT_NE(hart->console.find("\nPASS: every result equal to Core\n"), std::string::npos) << hart->console;
+  EXPECT_NE(hart->console.find("refusal: N = 1001 trapped (mcause 7, mtval 0x50000024) and skipped; "
+                               "specular_check_error: cause 2 (N out of range)"),
+            std::string::npos);
+  EXPECT_EQ(hart->faults, 1u);
+  if (variant == "poll") {
+    EXPECT_EQ(hart->interrupts, 0u);
+  } else {
+    EXPECT_GE(hart->interrupts, 1u);
+    EXPECT_NE(hart->console.find("pixels (by interrupt, "), std::string::npos);
+  }
+  if (variant == "irq") {
+    EXPECT_EQ(hart->plic.completes, hart->plic.claims);
+    EXPECT_GT(hart->plic.priority, hart->plic.threshold);
+  }
+}
+
+// riscv-vp raises a store page fault (mcause 15) for a failed transaction, where the
+// specification's access fault is 7: the example's handler skips it just the same.
+TEST(FirmwareExampleRv32Faults, APageFaultAsRiscvVpRaisesItIsSkippedToo) {
+  const std::filesystem::path elf = link_example("poll");
+  ASSERT_TRUE(std::filesystem::exists(elf));
+  static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, false, elf.string());
+  hart->load_fault = 13u;
+  hart->store_fault = 15u;
+  sc_core::sc_start();
+  std::cout << hart->console;
+  EXPECT_TRUE(hart->exited) << hart->error;
+  EXPECT_EQ(hart->exit_code, 0) << hart->console;
+  EXPECT_NE(hart->console.find("refusal: N = 1001 trapped (mcause 15, mtval 0x50000024) and skipped"),
+            std::string::npos)
+      << hart->console;
+  EXPECT_NE(hart->console.find("\nPASS: every result equal to Core\n"), std::string::npos);
+}
+
+std::string rv32_test_name(const testing::TestParamInfo<std::tuple<Kind, std::string>>& info) {
+  return firmware_targets::target_name(std::get<0>(info.param)) + "_" + std::get<1>(info.param);
+}
+
+INSTANTIATE_TEST_SUITE_P(Targets, FirmwareExampleRv32,
+                         testing::Combine(testing::Values(Kind::lt, Kind::rtl_sync),
+                                          testing::Values(std::string("poll"), std::string("irq"),
+                                                          std::string("irq_direct"))),
+                         rv32_test_name);
+
+}  // namespace
+}  // namespace specular

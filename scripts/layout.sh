@@ -17,6 +17,11 @@
 #                      of the netlist (a block: control_unit_sync, multiplier6, ...)
 #   --utilisation U    standard-cell density the placement is padded to, 0.2-0.9
 #                      (default 0.6, qflow's initial_density): room for the router
+#   --plant FAULT      for the tests (tests/layout, rtl/tb/layout_block_test.py): plant
+#                      one fault the checks must catch: drc (a 0.1 um metal1 square,
+#                      below the 0.3 um minimum width, painted beside the cells), lvs (one
+#                      pin of one instance of the mapped netlist left open after layout),
+#                      unrouted (every metal obstructed before routing)
 #   --no-sta           skip post-layout STA (a top without scripts/silicon/TOP/constraints.tcl
 #                      skips it with a note)
 #
@@ -43,16 +48,17 @@ netlist_dir=""
 netlist=""
 utilisation=0.6
 sta=1
+plant=""
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --no-sta) sta=0; shift ;;
-    --top|--netlist-dir|--netlist|--utilisation)
+    --top|--netlist-dir|--netlist|--utilisation|--plant)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --netlist) netlist="$2" ;;
-        --utilisation) utilisation="$2" ;;
+        --utilisation) utilisation="$2" ;; --plant) plant="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -62,6 +68,7 @@ done
 [[ ${#args[@]} -eq 1 ]] || fail_args "usage: layout.sh [options] OUT_DIR"
 [[ "$utilisation" =~ ^0?[.][0-9]+$ ]] && (( $(echo "$utilisation >= 0.2 && $utilisation <= 0.9" | bc) )) \
   || fail_args "--utilisation '$utilisation' is not a density from 0.2 to 0.9"
+[[ -z "$plant" || "$plant" =~ ^(drc|lvs|unrouted)$ ]] || fail_args "--plant '$plant' is not one of drc, lvs, unrouted"
 [[ "$top" =~ ^[A-Za-z_][A-Za-z0-9_]*$ ]] || fail_args "--top '$top' is not a module name"
 [[ -z "$netlist" || -z "$netlist_dir" ]] || fail_args "give --netlist or --netlist-dir, not both"
 [[ -z "$netlist" || -f "$netlist" ]] || fail_args "--netlist '$netlist' is not a file"
@@ -117,10 +124,6 @@ if [[ -n "$netlist_dir" ]]; then
   netlist_dir="$(cd "$netlist_dir" && pwd)"
   netlist="$netlist_dir/mapped.v"
   if [[ -f "$netlist_dir/rom_model.json" ]]; then
-    mkdir -p "$proj/source/macros"
-    macros_lef="$proj/source/macros/rom_macros.lef"
-    /usr/bin/python3 "$here/silicon/rom_model.py" --lef "$netlist_dir/rom_model.json" "$macros_lef" \
-      || { echo "layout.sh: rom_model.py --lef failed" >&2; exit 1; }
     bb="read_verilog $netlist_dir/rom_macros_bb.v"
     rom_lib="$netlist_dir/rom_macros.lib"
   fi
@@ -146,12 +149,28 @@ fi
 /usr/bin/python3 "$here/silicon/layout_prep.py" "$proj/${top}_raw.blif" "$proj/$top.blif" "$out/instances.tsv" \
   || { echo "layout.sh: layout_prep.py failed" >&2; exit 1; }
 printf 'set vddnet="vdd"\nset gndnet="gnd"\n' > "$proj/${top}_powerground"
+# the ROM macros the netlist holds: their LEF abstracts, from the model of their Liberty
+if [[ -n "$rom_lib" ]]; then
+  used=$(awk '$1==".gate" && $2 ~ /^ROM/ {print $2}' "$proj/$top.blif" | sort -u)
+  if [[ -n "$used" ]]; then
+    # One file per macro: qflow 1.3.17's blif2cel.tcl reads a hard-macro LEF to its end
+    # (its END test never matches) and so takes only the first macro of a file.
+    mkdir -p "$proj/source/macros"
+    macros_lef="$proj/source/macros/rom_macros.lef"
+    rm -f "$macros_lef"
+    for name in $used; do
+      /usr/bin/python3 "$here/silicon/rom_model.py" --lef "$netlist_dir/rom_model.json" \
+        "$proj/source/macros/$name.lef" "$name" \
+        || { echo "layout.sh: rom_model.py --lef failed" >&2; exit 1; }
+    done
+  fi
+fi
 # SPICE for LVS: the cells' subcircuits and an empty one per ROM macro (a black box)
 spice="$proj/cells.sp"
 cp "$OSU018/osu018_stdcells.sp" "$spice"
 if [[ -n "$macros_lef" ]]; then
   awk '/^MACRO /{name=$2; pins=""} /^  PIN /{pins=pins" "$2} /^END /&&$2==name{print ".subckt "name pins"\n.ends"}' \
-    "$macros_lef" >> "$spice"
+    "$proj"/source/macros/*.lef >> "$spice"
 fi
 qb=/usr/lib/qflow/bin
 "$qb/blif2Verilog" -c -v vdd -g gnd "$top.blif" > "$top.rtl.v"
@@ -190,6 +209,31 @@ if ! tcsh -f "$QFLOW_SCRIPTS/placement.sh" -d "$proj" "$top" > "$proj/log/place_
 fi
 step_done placement
 
+# graywolf puts a hard macro anywhere; its pins are on the metal2 track grid (0.8 um from
+# the die's corner, a multiple of 0.8 um) only when its x is: snapped down to it, else
+# the router's wires meet the pins off-centre and leave slivers below metal2's width.
+if [[ -n "$macros_lef" ]]; then
+  /usr/bin/python3 - "$proj/$top.def" <<'PY'
+import re, sys
+path = sys.argv[1]
+text = open(path).read()
+units = int(re.search(r"UNITS DISTANCE MICRONS (\d+)", text).group(1))
+grid = round(0.8 * units)
+def snap(m):
+    x = int(float(m.group(2)))
+    return f"{m.group(1)}( {x - x % grid} {m.group(3)} )"
+text = re.sub(r"(-\s+ROM\S*\s+ROM\S*\s+\+\s+PLACED\s+)\(\s*(-?\d+)\s+(-?\d+)\s*\)", snap, text)
+open(path, "w").write(text)
+PY
+  cp "$proj/$top.def" "$proj/${top}_unroute.def"
+fi
+
+if [[ "$plant" == unrouted ]]; then   # every metal obstructed: no net can be routed
+  obstructions=$(for m in 1 2 3 4 5 6; do echo "obstruction -1000 -1000 100000 100000 metal$m"; done)
+  awk -v o="$obstructions" '/^read_def/ {print o} {print}' "$proj/$top.cfg" > "$proj/$top.cfg.planted"
+  mv "$proj/$top.cfg.planted" "$proj/$top.cfg"
+fi
+
 # ---- routing (qrouter), wire R and C (rc2dly: SPEF, SDF) ---------------------------
 # router.sh leaves the routed DEF as TOP.def (the placed one is TOP_unroute.def) and the
 # routes' R and C as TOP.rc; rc2dly (qflow) turns those into SPEF for OpenSTA.
@@ -211,14 +255,21 @@ unrouted=${unrouted:-0}
 
 # ---- DRC and extraction (magic, abstract views) ------------------------------------
 lefs="lef read $OSU018/osu018_stdcells.lef"
-[[ -z "$macros_lef" ]] || lefs="$lefs
-lef read $macros_lef"
+if [[ -n "$macros_lef" ]]; then
+  for f in "$proj"/source/macros/*.lef; do lefs="$lefs
+lef read $f"; done
+fi
+planted_drc=""
+[[ "$plant" != drc ]] || planted_drc="box -200 -200 -199 -199
+paint metal1
+select top cell"
 cat > "$proj/magic_drc_extract.tcl" <<EOF
 $lefs
 def read ${top}_route.def
 load $top
 select top cell
 expand
+$planted_drc
 drc on
 drc check
 drc catchup
@@ -254,6 +305,10 @@ drc_errors=$(awk '/^drc_errors/ {print $2}' "$out/drc.txt")
 step_done drc_extract
 
 # ---- LVS (netgen): the layout's netlist against the mapped one, macros black boxes ---
+if [[ "$plant" == lvs ]]; then   # the first instance's first signal pin left open
+  awk '!done && /^X/ {for (i = 2; i < NF; i++) if ($i != "vdd" && $i != "gnd") {$i = "planted_open"; done = 1; break}} {print}' \
+    "$proj/$top.spc" > "$proj/$top.spc.planted" && mv "$proj/$top.spc.planted" "$proj/$top.spc"
+fi
 (cd "$proj" && netgen-lvs -batch lvs "${top}_layout.spice $top" "$top.spc $top" \
    "$OSU018/osu018_setup.tcl" "$out/lvs.txt" -blackbox) > "$proj/log/lvs.log" 2>&1 || true
 lvs_match=0

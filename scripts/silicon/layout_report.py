@@ -70,11 +70,11 @@ def main():
     out, top, util_asked, unrouted, drc, lvs, sta_note = sys.argv[1:]
     proj = f"{out}/qflow"
     sizes = lef_sizes(f"{OSU018}/osu018_stdcells.lef")
-    macro_lef = f"{proj}/source/macros/rom_macros.lef"
     macro_names = set()
-    if os.path.exists(macro_lef):
-        ms = lef_sizes(macro_lef)
-        macro_names = set(ms)
+    macro_dir = f"{proj}/source/macros"
+    for f in sorted(os.listdir(macro_dir)) if os.path.isdir(macro_dir) else []:
+        ms = lef_sizes(f"{macro_dir}/{f}")
+        macro_names |= set(ms)
         sizes.update(ms)
     die, rows, comps, length = read_def(f"{proj}/{top}_route.def")
     names = {}

@@ -32,8 +32,10 @@ The constants below are the whole model; docs/silicon.md quotes them.
       techmap commands, each selecting its memories by module/cell).
       Without MEMORIES_JSON: the device's three macros (images rom5.hex, rom38.hex).
 
-  rom_model.py --lef ROM_MODEL_JSON OUT_LEF
-      the LEF abstracts alone, from the figures of an earlier run's rom_model.json.
+  rom_model.py --lef ROM_MODEL_JSON OUT_LEF [NAME ...]
+      the LEF abstracts alone, from the figures of an earlier run's rom_model.json; with
+      NAMEs only those macros (qflow 1.3.17's blif2cel.tcl, reading a hard-macro LEF,
+      never finds the end of a macro the netlist does not use and skips every one after it).
 """
 import json
 import math
@@ -225,13 +227,15 @@ def behavioural(models, images=None):
 # The LEF abstract of a macro (scripts/layout.sh): an outline of the model's area with the
 # bit array's aspect (columns wide, rows high, the same bit cell), its pins on metal2 along
 # the bottom edge, and obstructions on metal1-3 over the rest (the array and its decoders
-# use them); metal4-6 stay free for routing over the macro. No power pins: the model has no
+# use them) but a channel along the pins on metal2 and metal3 (LEF_CHANNEL_UM), where the
+# router reaches them even when the placer puts that edge against the die's; metal4-6
+# stay free for routing over the macro. No power pins: the model has no
 # supply network, and the layout does not connect one (docs/silicon.md says so).
 LEF_GRID_X_UM = 1.6          # twice the metal2 pitch (0.8 um): pins on every other track
 LEF_GRID_Y_UM = 10.0         # the standard-cell row height
 LEF_PIN_DEPTH_UM = 1.0       # a pin's length into the macro on metal2
-LEF_PIN_WIDTH_UM = 0.3       # the metal2 minimum width (osu018_stdcells.lef)
-LEF_OBS_GAP_UM = 0.6         # metal2 obstruction starts this far above the pins
+LEF_PIN_WIDTH_UM = 0.4       # a via's metal2 pad (osu018_stdcells.lef: M2_M1, M3_M2): no notch where they meet
+LEF_CHANNEL_UM = 8.0         # metal2 and metal3 obstructions start this far above the pins
 LEF_OBS_LAYERS = ("metal1", "metal2", "metal3")
 
 
@@ -261,8 +265,8 @@ def lef(models):
         out += [f"MACRO {m['name']}", "  CLASS BLOCK ;", f"  FOREIGN {m['name']} 0.000 0.000 ;",
                 "  ORIGIN 0.000 0.000 ;", f"  SIZE {w:.3f} BY {h:.3f} ;", "  SYMMETRY X Y ;"]
         for k, pin in enumerate(pins):
-            # metal2 track centres are at 0.4 + 0.8 n
-            x = (k + 1) * step * LEF_GRID_X_UM + 0.4
+            # on a metal2 track when the macro's x is (qflow's tracks: 0.8 um from the die corner)
+            x = (k + 1) * step * LEF_GRID_X_UM
             direction = "INPUT" if pin.startswith("A") else "OUTPUT"
             out += [f"  PIN {pin}", f"    DIRECTION {direction} ;", "    USE SIGNAL ;", "    PORT",
                     "      LAYER metal2 ;",
@@ -270,7 +274,7 @@ def lef(models):
                     "    END", f"  END {pin}"]
         out.append("  OBS")
         for layer in LEF_OBS_LAYERS:
-            y0 = LEF_PIN_DEPTH_UM + LEF_OBS_GAP_UM if layer == "metal2" else 0.0
+            y0 = 0.0 if layer == "metal1" else LEF_PIN_DEPTH_UM + LEF_CHANNEL_UM
             out += [f"    LAYER {layer} ;", f"      RECT 0.000 {y0:.3f} {w:.3f} {h:.3f} ;"]
         out += ["  END", f"END {m['name']}", ""]
     out.append("END LIBRARY")
@@ -316,8 +320,10 @@ def hex_words(init, words, width):
 
 
 def main():
-    if len(sys.argv) == 4 and sys.argv[1] == "--lef":
+    if len(sys.argv) >= 4 and sys.argv[1] == "--lef":
         models = json.load(open(sys.argv[2]))["macros"]
+        if len(sys.argv) > 4:   # only these (qflow's blif2cel reads past an unused macro)
+            models = [m for m in models if m["name"] in sys.argv[4:]]
         with open(sys.argv[3], "w") as f:
             f.write(lef(models))
         return 0

@@ -12,6 +12,7 @@
 #   --netlist-dir DIR  silicon.sh's output folder: mapped.v, rom_model.json,
 #                      rom_macros.lib, rom_macros_bb.v (default: run silicon.sh
 #                      --no-gatesim --top TOP into OUT_DIR/silicon first)
+#   --rom-dir DIR      ROM images for that silicon.sh run (its ROM_DIR argument)
 #   --netlist FILE     a mapped netlist of OSU cells alone (no ROM macros), instead of DIR
 #   --top NAME         the module to lay out (default specular_device_sync); any module
 #                      of the netlist (a block: control_unit_sync, multiplier6, ...)
@@ -40,12 +41,14 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 QFLOW_SCRIPTS="${SPECULAR_QFLOW_SCRIPTS:-/usr/lib/qflow/scripts}"
+MACRO_GAP_UM=20   # between the core and the macros, and between macros: room for the wires to their pins
 usage() { sed -n '2,/^set -euo/p' "${BASH_SOURCE[0]}" | grep '^#' | sed 's/^# \{0,1\}//'; }
 fail_args() { echo "layout.sh: $1 (see --help)" >&2; exit 2; }
 
 top=specular_device_sync
 netlist_dir=""
 netlist=""
+rom_dir=""
 utilisation=0.6
 sta=1
 plant=""
@@ -54,11 +57,11 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --no-sta) sta=0; shift ;;
-    --top|--netlist-dir|--netlist|--utilisation|--plant)
+    --top|--netlist-dir|--netlist|--utilisation|--plant|--rom-dir)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --netlist) netlist="$2" ;;
-        --utilisation) utilisation="$2" ;; --plant) plant="$2" ;;
+        --utilisation) utilisation="$2" ;; --plant) plant="$2" ;; --rom-dir) rom_dir="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -112,8 +115,7 @@ step_done() {  # step_done NAME: prints and keeps the step's wall time
 # ---- the netlist: silicon.sh's, or made here --------------------------------------
 if [[ -z "$netlist" && -z "$netlist_dir" ]]; then
   netlist_dir="$out/silicon"
-  nice_top=$top
-  bash "$here/silicon.sh" --top "$nice_top" --no-gatesim "$netlist_dir" \
+  bash "$here/silicon.sh" --top "$top" --no-gatesim "$netlist_dir" ${rom_dir:+"$rom_dir"} \
     || { echo "layout.sh: silicon.sh failed for '$top'" >&2; exit 1; }
   step_done mapping
 fi
@@ -139,7 +141,7 @@ $bb
 read_verilog $netlist
 hierarchy -check -top $top
 flatten
-hilomap -hicell LOGIC1 O -locell LOGIC0 O
+hilomap -singleton -hicell LOGIC1 O -locell LOGIC0 O
 opt_clean -purge
 tee -q -o $proj/log/prep_stat.txt stat
 write_blif -buf BUFX2 A Y -cname $proj/${top}_raw.blif" >/dev/null 2>&1; then
@@ -173,10 +175,18 @@ if [[ -n "$macros_lef" ]]; then
     "$proj"/source/macros/*.lef >> "$spice"
 fi
 qb=/usr/lib/qflow/bin
-"$qb/blif2Verilog" -c -v vdd -g gnd "$top.blif" > "$top.rtl.v"
-"$qb/blif2Verilog" -c -p -v vdd -g gnd "$top.blif" > "$top.rtlnopwr.v"
-"$qb/blif2Verilog" -c -p -b -n -v vdd -g gnd "$top.blif" > "$top.rtlbb.v"
-"$qb/blif2BSpice" -i -p vdd -g gnd -l "$spice" "$top.blif" > "$top.spc"
+netlist_files() {  # the full netlist (macros included) as Verilog and SPICE, as qflow names them
+  "$qb/blif2Verilog" -c -v vdd -g gnd "${top}_full.blif" > "$top.rtl.v"
+  "$qb/blif2Verilog" -c -p -v vdd -g gnd "${top}_full.blif" > "$top.rtlnopwr.v"
+  "$qb/blif2Verilog" -c -p -b -n -v vdd -g gnd "${top}_full.blif" > "$top.rtlbb.v"
+  "$qb/blif2BSpice" -i -p vdd -g gnd -l "$spice" "${top}_full.blif" > "$top.spc"
+}
+# graywolf places the standard cells alone (its macro mode crashed on the whole device:
+# mc_compact, "stack smashing detected"); the macros go beside the core afterwards
+# (silicon/layout_floorplan.py), so the BLIF graywolf reads leaves them out.
+mv "$top.blif" "${top}_full.blif"
+awk '!($1 == ".gate" && $2 ~ /^ROM/)' "${top}_full.blif" > "$top.blif"
+netlist_files
 cat > "$proj/qflow_vars.sh" <<EOF
 #!/usr/bin/tcsh -f
 # qflow variables of scripts/layout.sh's project (as qflow itself writes them)
@@ -209,23 +219,14 @@ if ! tcsh -f "$QFLOW_SCRIPTS/placement.sh" -d "$proj" "$top" > "$proj/log/place_
 fi
 step_done placement
 
-# graywolf puts a hard macro anywhere; its pins are on the metal2 track grid (0.8 um from
-# the die's corner, a multiple of 0.8 um) only when its x is: snapped down to it, else
-# the router's wires meet the pins off-centre and leave slivers below metal2's width.
+# the floorplan: the ROM macros in a row below the core, pins facing it, on the routing
+# grid; the netlist files again from the full BLIF (placement rewrote them without macros)
 if [[ -n "$macros_lef" ]]; then
-  /usr/bin/python3 - "$proj/$top.def" <<'PY'
-import re, sys
-path = sys.argv[1]
-text = open(path).read()
-units = int(re.search(r"UNITS DISTANCE MICRONS (\d+)", text).group(1))
-grid = round(0.8 * units)
-def snap(m):
-    x = int(float(m.group(2)))
-    return f"{m.group(1)}( {x - x % grid} {m.group(3)} )"
-text = re.sub(r"(-\s+ROM\S*\s+ROM\S*\s+\+\s+PLACED\s+)\(\s*(-?\d+)\s+(-?\d+)\s*\)", snap, text)
-open(path, "w").write(text)
-PY
+  /usr/bin/python3 "$here/silicon/layout_floorplan.py" "$proj/$top.def" "$proj/$top.cfg" \
+    "$proj/${top}_full.blif" "$MACRO_GAP_UM" "$proj"/source/macros/*.lef | tee "$out/floorplan.txt" \
+    || { echo "layout.sh: layout_floorplan.py failed" >&2; exit 1; }
   cp "$proj/$top.def" "$proj/${top}_unroute.def"
+  netlist_files
 fi
 
 if [[ "$plant" == unrouted ]]; then   # every metal obstructed: no net can be routed

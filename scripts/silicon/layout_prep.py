@@ -43,8 +43,7 @@ def main():
             cell = parts[1]
             if cell in ("LOGIC0", "LOGIC1"):
                 supply = "gnd" if cell == "LOGIC0" else "vdd"
-                pins = [p.replace("O=", "Y=") for p in parts[2:]]
-                s = f".gate BUFX2 A={supply} " + " ".join(pins)
+                parts = [".gate", "BUFX2", f"A={supply}"] + [p.replace("O=", "Y=") for p in parts[2:]]
                 cell = "BUFX2"
             n = counts.get(cell, 0) + 1   # blif2cel counts from 1
             counts[cell] = n

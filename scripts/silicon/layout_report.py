@@ -7,7 +7,7 @@ Reads OUT_DIR/qflow/TOP_route.def (the routed layout), the cells' and macros' LE
 their sizes, OUT_DIR/instances.tsv (layout name -> netlist name: the block of Fig. 1 is
 the netlist name's part before the first dot), OUT_DIR/times.txt and, when STA ran,
 OUT_DIR/sta/. Gives the die and core, the standard cells' area and the macros', the
-utilisation (cell area over the core less the macros), the wire length per metal, where
+utilisation (cell area over the standard-cell core: the placed cells' extent, fill included), the wire length per metal, where
 each block was placed (bounding box and centre of its cells) and the worst post-layout
 path with its instances named.
 """
@@ -105,11 +105,11 @@ def main():
     die_w, die_h = die[2] - die[0], die[3] - die[1]
     # qflow's DEF has no ROW statements: the core is the placed cells' extent (the rows
     # graywolf made, fill included) and the macros'
-    placed = [(x, y, x + sizes.get(c, (0, 0))[0], y + sizes.get(c, (0, 0))[1]) for _, c, x, y, _ in comps]
+    placed = [(x, y, x + sizes.get(c, (0, 0))[0], y + sizes.get(c, (0, 0))[1])
+              for _, c, x, y, _ in comps if c not in macro_names]
     core = (min(p[0] for p in placed), min(p[1] for p in placed),
             max(p[2] for p in placed), max(p[3] for p in placed))
     core_area = (core[2] - core[0]) * (core[3] - core[1])
-    core_macros = sum(m["w_um"] * m["h_um"] for m in macros)
     block_list = {}
     for k, b in sorted(blocks.items()):
         xs, ys = sorted(b["x"]), sorted(b["y"])
@@ -133,7 +133,7 @@ def main():
         "macro_area_um2": round(macro_area, 1),
         "fill_and_spacer_area_um2": round(fill_area, 1),
         "utilisation_asked": float(util_asked),
-        "utilisation": round(cell_area / max(core_area - core_macros, 1e-9), 4),
+        "utilisation": round(cell_area / max(core_area, 1e-9), 4),
         "utilisation_with_macros": round((cell_area + macro_area) / max(die_w * die_h, 1e-9), 4),
         "wire_length_um": {k: round(v, 1) for k, v in sorted(length.items())},
         "wire_length_total_um": round(sum(length.values()), 1),
@@ -166,7 +166,7 @@ def main():
           f"| die | {die_w:.1f} x {die_h:.1f} um = {summary['die_area_mm2']} mm² |",
           f"| standard cells | {summary['standard_cells']} ({cell_area:.0f} um²) |",
           f"| macros | {len(macros)} ({macro_area:.0f} um²) |",
-          f"| utilisation (cells over core less macros; asked {util_asked}) | {summary['utilisation']:.3f} |",
+          f"| utilisation (cells over the standard-cell core; asked {util_asked}) | {summary['utilisation']:.3f} |",
           f"| wire length | {summary['wire_length_total_um'] / 1000:.1f} mm |",
           f"| unrouted nets | {unrouted} |", f"| DRC errors (abstract views) | {drc} |",
           f"| LVS | {'match' if lvs == '1' else 'MISMATCH'} |",

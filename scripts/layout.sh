@@ -30,7 +30,8 @@
 # qflow/log/), drc.txt (magic's count and every error with its reason), lvs.txt (netgen),
 # instances.tsv (layout name -> netlist name), sta/ (post-layout reports, with
 # sta_summary.txt), layout_summary.json and layout_report.md (die, utilisation, wire
-# length, DRC, LVS, unrouted nets, T_sta, each step's time).
+# length, DRC, LVS, unrouted nets, T_sta, each step's time), floorplan.txt (where the
+# macros went), die.png (KLayout) and die.svg (the blocks of Fig. 1 marked).
 # DRC and LVS run on abstract views: qflow-tech-osu018 has the cells' LEF but no GDS, so
 # magic checks the routing and the cells' pins and obstructions, not the cells' insides.
 # Exit status: 0 clean (no unrouted net, 0 DRC errors, LVS match), 1 a tool failed or a
@@ -351,6 +352,22 @@ fi
 } > "$out/times.txt"
 /usr/bin/python3 "$here/silicon/layout_report.py" "$out" "$top" "$utilisation" "$unrouted" \
   "$drc_errors" "$lvs_match" "$sta_note" || { echo "layout.sh: layout_report.py failed" >&2; exit 1; }
+
+# ---- the picture: PNG (KLayout, batch) and SVG (silicon/layout_svg.py) ----------------
+if command -v klayout >/dev/null; then
+  lef_list="$OSU018/osu018_stdcells.lef"
+  [[ -z "$macros_lef" ]] || for f in "$proj"/source/macros/*.lef; do lef_list="$lef_list,$f"; done
+  (cd "$proj" && QT_QPA_PLATFORM=offscreen klayout -b -rd def="$proj/${top}_route.def" -rd lefs="$lef_list" \
+     -rd summary="$out/layout_summary.json" -rd png="$out/die.png" -rd width=2000 \
+     -r "$here/silicon/layout_picture.rb") > "$proj/log/klayout.log" 2>&1 \
+    || echo "layout.sh: note: klayout could not draw the die; see $proj/log/klayout.log" >&2
+else
+  echo "layout.sh: note: klayout not installed: no die.png" >&2
+fi
+/usr/bin/python3 "$here/silicon/layout_svg.py" "$out" "$top" "$out/die.svg" > /dev/null \
+  || echo "layout.sh: note: layout_svg.py could not draw the die" >&2
+step_done picture
+echo "picture_s ${step_times[-1]}" >> "$out/times.txt"
 
 verdict=0
 [[ "$unrouted" == 0 ]] || { echo "layout.sh: $unrouted nets unrouted (qrouter); see $proj/log/route.log" >&2; verdict=1; }

@@ -245,8 +245,11 @@ if ! grep -q '^\*\*\* Writing DEF file' "$proj/log/route.log" 2>/dev/null || [[ 
   exit 1
 fi
 cp "$proj/$top.def" "$proj/${top}_route.def"
-/usr/lib/qflow/bin/rc2dly -D : -r "$proj/$top.rc" -l "$lib" -d "$proj/$top.spef" > "$proj/log/rc2dly.log" 2>&1 \
+/usr/lib/qflow/bin/rc2dly -D : -r "$proj/$top.rc" -l "$lib" -d "$proj/${top}_rc2dly.spef" > "$proj/log/rc2dly.log" 2>&1 \
   || { echo "layout.sh: rc2dly failed; see $proj/log/rc2dly.log" >&2; exit 1; }
+# its node names and net spellings as OpenSTA reads them (silicon/spef_fix.py says which)
+/usr/bin/python3 "$here/silicon/spef_fix.py" "$proj/${top}_rc2dly.spef" "$proj/$top.rtlnopwr.v" "$proj/$top.spef" \
+  >> "$proj/log/rc2dly.log" || { echo "layout.sh: spef_fix.py failed" >&2; exit 1; }
 step_done routing
 # qrouter's verdict: "Final: No failed routes!" or "Final: Failed net routes: N"
 unrouted=$(grep -h '^Final:' "$proj/log/route.log" | tail -1 | sed -n 's/.*Failed net routes: *\([0-9]*\).*/\1/p')

@@ -96,7 +96,7 @@ def main():
             continue
         cell_area += w * h
         net = names[name]
-        block = net.split(".")[0] if "." in net else "(top)"
+        block = net.split(".")[0] if "." in net and not net.startswith("$") else "(top)"
         b = blocks.setdefault(block, {"cells": 0, "area_um2": 0.0, "x": [], "y": []})
         b["cells"] += 1
         b["area_um2"] += w * h

@@ -42,7 +42,7 @@ def main():
         if inst not in names or m.group(2).startswith("ROM"):
             continue
         net = names[inst]
-        block = net.split(".")[0] if "." in net else "(top)"
+        block = net.split(".")[0] if "." in net and not net.startswith("$") else "(top)"
         key = (int((float(m.group(3)) / u - x0) // BIN_UM), int((float(m.group(4)) / u - y0) // BIN_UM))
         bins.setdefault(key, {}).setdefault(block, 0)
         bins[key][block] += 1

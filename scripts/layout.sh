@@ -31,7 +31,9 @@
 # instances.tsv (layout name -> netlist name), sta/ (post-layout reports, with
 # sta_summary.txt), layout_summary.json and layout_report.md (die, utilisation, wire
 # length, DRC, LVS, unrouted nets, T_sta, each step's time), floorplan.txt (where the
-# macros went), die.png (KLayout) and die.svg (the blocks of Fig. 1 marked).
+# macros went), die.png (KLayout) and die.svg (the blocks of Fig. 1 marked), and with
+# --netlist-dir and STA postlayout/ (gatesim.sh --netlist-dir: the laid-out netlist and
+# its SDF with the wires).
 # DRC and LVS run on abstract views: qflow-tech-osu018 has the cells' LEF but no GDS, so
 # magic checks the routing and the cells' pins and obstructions, not the cells' insides.
 # Exit status: 0 clean (no unrouted net, 0 DRC errors, LVS match), 1 a tool failed or a
@@ -344,6 +346,16 @@ if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
     exit 1
   fi
   step_done sta
+  # a netlist folder gatesim.sh reads (--netlist-dir OUT_DIR/postlayout): the laid-out
+  # netlist and the SDF OpenSTA wrote with the wires, beside silicon.sh's ROM models
+  if [[ -n "$netlist_dir" ]]; then
+    rm -rf "$out/postlayout"
+    mkdir -p "$out/postlayout"
+    cp -r "$netlist_dir"/. "$out/postlayout/"
+    cp "$proj/$top.rtlnopwr.v" "$out/postlayout/mapped.v"
+    cp "$out/sta/device.sdf" "$out/postlayout/device.sdf"
+    cp "$out/sta/sta_summary.txt" "$out/postlayout/sta_summary.txt"
+  fi
 elif [[ $sta -eq 1 ]]; then
   sta_note="no post-layout STA: $top has no scripts/silicon/$top/constraints.tcl"
   echo "layout.sh: note: $sta_note" >&2

@@ -23,6 +23,9 @@
 #                      below the 0.3 um minimum width, painted beside the cells), lvs (one
 #                      pin of one instance of the mapped netlist left open after layout),
 #                      unrouted (every metal obstructed before routing)
+#   --resume           keep OUT_DIR/qflow and go on after its placement (a long run whose
+#                      placement.sh finished on its own: graywolf takes tens of minutes on
+#                      the whole device)
 #   --no-sta           skip post-layout STA (a top without scripts/silicon/TOP/constraints.tcl
 #                      skips it with a note)
 #
@@ -54,12 +57,14 @@ netlist=""
 rom_dir=""
 utilisation=0.6
 sta=1
+resume=0
 plant=""
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --no-sta) sta=0; shift ;;
+    --resume) resume=1; shift ;;
     --top|--netlist-dir|--netlist|--utilisation|--plant|--rom-dir)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
@@ -102,7 +107,7 @@ mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 lib="$OSU018/osu018_stdcells.lib"
 proj="$out/qflow"
-rm -rf "$proj"
+[[ $resume -eq 1 ]] || rm -rf "$proj"
 mkdir -p "$proj/source" "$proj/log"
 seconds() { date +%s.%N; }
 declare -a step_names=() step_times=()
@@ -135,10 +140,28 @@ if [[ -n "$netlist_dir" ]]; then
 fi
 netlist="$(cd "$(dirname "$netlist")" && pwd)/$(basename "$netlist")"
 
+# SPICE for LVS: the cells' subcircuits and an empty one per ROM macro (a black box)
+spice="$proj/cells.sp"
+qb=/usr/lib/qflow/bin
+netlist_files() {  # the full netlist (macros included) as Verilog and SPICE, as qflow names them
+  "$qb/blif2Verilog" -c -v vdd -g gnd "${top}_full.blif" > "$top.rtl.v"
+  "$qb/blif2Verilog" -c -p -v vdd -g gnd "${top}_full.blif" > "$top.rtlnopwr.v"
+  "$qb/blif2Verilog" -c -p -b -n -v vdd -g gnd "${top}_full.blif" > "$top.rtlbb.v"
+  "$qb/blif2BSpice" -i -p vdd -g gnd -l "$spice" "${top}_full.blif" > "$top.spc"
+}
+cd "$proj"
+if [[ $resume -eq 1 ]]; then
+  [[ -f "$proj/${top}_full.blif" && -f "$proj/$top.def" ]] \
+    || { echo "layout.sh: --resume: no placed project in $proj" >&2; exit 1; }
+  ! compgen -G "$proj/source/macros/*.lef" >/dev/null || macros_lef="$proj/source/macros/rom_macros.lef"
+  # placement.sh's DEF as it left it (kept at the first pass), whatever came after
+  [[ -f "$proj/${top}_placed.def" ]] || cp "$proj/$top.def" "$proj/${top}_placed.def"
+  cp "$proj/${top}_placed.def" "$proj/$top.def"
+  grep -q '^read_def' "$proj/$top.cfg" || { echo "layout.sh: --resume: placement.sh wrote no $top.cfg" >&2; exit 1; }
+else
 # ---- the netlist as qflow's synthesis would leave it: flat BLIF, Verilog, SPICE ------
 # Flattened (instance names keep their block: mul6._123_), constants as BUFX2 from
 # gnd/vdd, aliases merged (opt_clean -purge; no buffer is added).
-cd "$proj"
 if ! yosys -q -l "$proj/log/prep_yosys.log" -p "read_liberty -lib $lib
 $bb
 read_verilog $netlist
@@ -170,20 +193,11 @@ if [[ -n "$rom_lib" ]]; then
     done
   fi
 fi
-# SPICE for LVS: the cells' subcircuits and an empty one per ROM macro (a black box)
-spice="$proj/cells.sp"
 cp "$OSU018/osu018_stdcells.sp" "$spice"
 if [[ -n "$macros_lef" ]]; then
   awk '/^MACRO /{name=$2; pins=""} /^  PIN /{pins=pins" "$2} /^END /&&$2==name{print ".subckt "name pins"\n.ends"}' \
     "$proj"/source/macros/*.lef >> "$spice"
 fi
-qb=/usr/lib/qflow/bin
-netlist_files() {  # the full netlist (macros included) as Verilog and SPICE, as qflow names them
-  "$qb/blif2Verilog" -c -v vdd -g gnd "${top}_full.blif" > "$top.rtl.v"
-  "$qb/blif2Verilog" -c -p -v vdd -g gnd "${top}_full.blif" > "$top.rtlnopwr.v"
-  "$qb/blif2Verilog" -c -p -b -n -v vdd -g gnd "${top}_full.blif" > "$top.rtlbb.v"
-  "$qb/blif2BSpice" -i -p vdd -g gnd -l "$spice" "${top}_full.blif" > "$top.spc"
-}
 # graywolf places the standard cells alone (its macro mode crashed on the whole device:
 # mc_compact, "stack smashing detected"); the macros go beside the core afterwards
 # (silicon/layout_floorplan.py), so the BLIF graywolf reads leaves them out.
@@ -221,6 +235,8 @@ if ! tcsh -f "$QFLOW_SCRIPTS/placement.sh" -d "$proj" "$top" > "$proj/log/place_
   exit 1
 fi
 step_done placement
+cp "$proj/$top.def" "$proj/${top}_placed.def"
+fi
 
 # the floorplan: the ROM macros in a row below the core, pins facing it, on the routing
 # grid; the netlist files again from the full BLIF (placement rewrote them without macros)

@@ -401,6 +401,8 @@ step_done picture
 echo "picture_s ${step_times[-1]}" >> "$out/times.txt"
 
 verdict=0
+bare=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["nets_without_wire_in_def"])' "$out/layout_summary.json")
+[[ "$bare" == 0 ]] || { echo "layout.sh: $bare nets of two or more pins have no wire in the routed DEF" >&2; verdict=1; }
 [[ "$unrouted" == 0 ]] || { echo "layout.sh: $unrouted nets unrouted (qrouter); see $proj/log/route.log" >&2; verdict=1; }
 [[ "$drc_errors" == 0 ]] || { echo "layout.sh: $drc_errors DRC errors; each with its reason in $out/drc.txt" >&2; verdict=1; }
 [[ $lvs_match -eq 1 ]] || { echo "layout.sh: LVS mismatch; see $out/lvs.txt" >&2; verdict=1; }

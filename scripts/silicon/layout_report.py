@@ -46,9 +46,14 @@ def read_def(path):
     for m in re.finditer(r"-\s+(\S+)\s+(\S+)\s+\+\s+(?:PLACED|FIXED)\s+\(\s*(\S+)\s+(\S+)\s*\)\s+(\S+)", sect):
         comps.append((m.group(1), m.group(2), float(m.group(3)) / units, float(m.group(4)) / units, m.group(5)))
     length = {}
+    bare = 0   # nets of two or more pins without a routed wire (a check beside qrouter's)
     nets = re.search(r"^NETS.*?^END NETS", text, re.M | re.S)
     if nets:
         for stmt in nets.group(0).split(";"):
+            if stmt.count("(") - stmt.count("( *") >= 2 and "ROUTED" not in stmt and "- " in stmt:
+                pins = re.findall(r"\(\s*(\S+)\s+(\S+)\s*\)", stmt.split("+")[0])
+                if len(pins) >= 2:
+                    bare += 1
             # every wire: a layer then points ( x y ) with * for the unchanged coordinate
             for m in re.finditer(r"(?:ROUTED|NEW)\s+(\S+)(.*?)(?=\bNEW\b|$)", stmt, re.S):
                 layer = m.group(1)
@@ -60,7 +65,7 @@ def read_def(path):
                     px, py = x, y
                 for (x0, y0), (x1, y1) in zip(pts, pts[1:]):
                     length[layer] = length.get(layer, 0.0) + (abs(x1 - x0) + abs(y1 - y0)) / units
-    return die, rows, comps, length
+    return die, rows, comps, length, bare
 
 
 def main():
@@ -76,7 +81,7 @@ def main():
         ms = lef_sizes(f"{macro_dir}/{f}")
         macro_names |= set(ms)
         sizes.update(ms)
-    die, rows, comps, length = read_def(f"{proj}/{top}_route.def")
+    die, rows, comps, length, bare = read_def(f"{proj}/{top}_route.def")
     names = {}
     for line in open(f"{out}/instances.tsv").read().splitlines()[1:]:
         lay, net = line.split("\t")
@@ -138,6 +143,7 @@ def main():
         "wire_length_um": {k: round(v, 1) for k, v in sorted(length.items())},
         "wire_length_total_um": round(sum(length.values()), 1),
         "unrouted_nets": unrouted if unrouted == "unknown" else int(unrouted),
+        "nets_without_wire_in_def": bare,
         "drc_errors": int(drc),
         "lvs_match": lvs == "1",
         "drc_lvs_views": "abstract (LEF): qflow-tech-osu018 has no cell GDS",

@@ -267,6 +267,7 @@ cp "$proj/$top.def" "$proj/${top}_route.def"
   || { echo "layout.sh: rc2dly failed; see $proj/log/rc2dly.log" >&2; exit 1; }
 # its node names and net spellings as OpenSTA reads them (silicon/spef_fix.py says which)
 /usr/bin/python3 "$here/silicon/spef_fix.py" "$proj/${top}_rc2dly.spef" "$proj/$top.rtlnopwr.v" "$proj/$top.spef" \
+  "$out/wire_cap.txt" \
   >> "$proj/log/rc2dly.log" || { echo "layout.sh: spef_fix.py failed" >&2; exit 1; }
 step_done routing
 # qrouter's verdict: "Final: No failed routes!" or "Final: Failed net routes: N"
@@ -371,6 +372,7 @@ if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
     cp "$proj/$top.rtlnopwr.v" "$out/postlayout/mapped.v"
     cp "$out/sta/device.sdf" "$out/postlayout/device.sdf"
     cp "$out/sta/sta_summary.txt" "$out/postlayout/sta_summary.txt"
+    cp "$out/wire_cap.txt" "$out/postlayout/wire_cap.txt"   # energy.sh weighs each net's wire
   fi
 elif [[ $sta -eq 1 ]]; then
   sta_note="no post-layout STA: $top has no scripts/silicon/$top/constraints.tcl"

@@ -9,7 +9,9 @@
 #   scripts/energy.sh [options] OUT_DIR [ROM_DIR]
 #
 #   --top NAME          the top (default specular_device), as silicon.sh takes it
-#   --netlist-dir DIR   silicon.sh's output folder (mapped.v, device.sdf, rom_model.json);
+#   --netlist-dir DIR   silicon.sh's output folder (mapped.v, device.sdf, rom_model.json),
+#                       or scripts/layout.sh's OUT/postlayout (its wire_cap.txt: each net
+#                       weighed by its pins and its routed wire);
 #                       default: run silicon.sh --no-gatesim into OUT_DIR/silicon first
 #   --period NS         the replays' clock period, the common clock (default 50)
 #   --t-sim NS          the design's own T_sim (default: t_sim_ns of DIR's
@@ -151,6 +153,9 @@ if [[ -x "$counter" ]]; then
 else
   echo "energy.sh: no toggle counter at '$counter' (cmake --build build --target specular_vcd_activity): energy.py's own reader counts, 10-20 times slower" >&2
 fi
+# after layout (scripts/layout.sh's postlayout/): each net's routed wire capacitance too
+wire_opts=()
+[[ ! -f "$netlist_dir/wire_cap.txt" ]] || wire_opts=(--wire-cap "$netlist_dir/wire_cap.txt")
 modes=(sdf)
 [[ $zero -eq 0 ]] || modes+=(zero)
 for mode in "${modes[@]}"; do
@@ -169,7 +174,7 @@ for mode in "${modes[@]}"; do
     --lib "$netlist_dir/rom_macros.lib" --netlist "$netlist_dir/mapped.v" --top "$top" \
     --tb-top "$TB_TOP" --vcd "$out/$mode/activity.vcd" --slews "$out/slews.txt" \
     --rom-model "$netlist_dir/rom_model.json" "${strobe[@]}" \
-    "${counter_opts[@]}" --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
+    "${counter_opts[@]}" "${wire_opts[@]}" --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
     || { echo "energy.sh: counting the $mode activity failed" >&2; exit 1; }
   echo "count_s $((SECONDS - started))" >> "$out/$mode/time.txt"
   echo "vcd_bytes $(stat -c %s "$out/$mode/activity.vcd")" >> "$out/$mode/time.txt"

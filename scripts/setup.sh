@@ -26,6 +26,10 @@ set -euo pipefail
 #   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/silicon.sh, gatesim.sh,
 #                                       docs/silicon.md): the OSU 0.18 um standard cells
 #                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
+#   qflow, graywolf, qrouter, magic,    the layout (scripts/layout.sh, docs/silicon.md "Layout",
+#   netgen-lvs, tcsh, klayout           issue 48): qflow 1.3.17's scripts (tcsh) drive graywolf
+#                                       placement and qrouter routing, magic checks DRC and
+#                                       extracts, netgen compares (LVS), klayout draws the die
 #   nlohmann-json3-dev                  JSON: specular_tb's report settings and summary, the partial
 #                                       results of sharded runs (--shard, --partial, --merge)
 #   slurm-wlm, munge, jq                scripts/farm.sh on Slurm, scripts/slurm_cluster.sh (a
@@ -42,6 +46,7 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev
   verilator iverilog yosys
   qflow-tech-osu018 opensta bc
+  qflow graywolf qrouter magic netgen-lvs tcsh klayout  # scripts/layout.sh: place, route, DRC, LVS, the die's picture
   nlohmann-json3-dev
   slurm-wlm munge jq
   python3-lxml  # tests/ipxact: reads the IP-XACT component back with an XML library (docs/ipxact.md)

@@ -5,7 +5,7 @@ Icarus replay with delays and with zero delay, the VCD-to-toggles step, the ener
 the Liberty tables, OpenSTA's slews and report_power, the report.
 
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH CHECK
-  CHECK: inverter_chain | glitch | rom_monotonic | openSTA | arguments
+  CHECK: inverter_chain | wire_cap | glitch | rom_monotonic | openSTA | arguments
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH whole_path NETLIST_DIR VECTORS_TOOL
                          SPECULAR_TB ROM_DIR COUNTER
   silicon_energy_test.py ENERGY_PY OSU018_DIR SCRATCH counter COUNTER
@@ -17,6 +17,10 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
   the slew the test states (0.06 ns, the table's first column), plus 40 x 1/2 C V^2
   on a, n1 and n2 (one INVX1 input each; y drives nothing);
   leakage 3 x INVX1's cell_leakage_power.
+- wire_cap: the chain with 0.010 pF of wire on n1 and 0.005 pF on n2 (energy.py
+  --wire-cap, the routed wires of scripts/layout.sh): both loads grow by their wire, in
+  the switching energy and in u1's and u2's internal-power lookups; a net the netlist
+  lacks is counted as unknown.
 - glitch: a = XOR(a, a through six INVX1) is 0 in zero delay; with the cells' delays
   (-gspecify) every change of a makes a pulse. The delayed replay counts 2K toggles on
   the XOR's output, the zero-delay replay none; the report's glitch share of the toggles
@@ -193,6 +197,32 @@ def check_inverter_chain(energy_py, osu, scratch):
         return 1
     print(f"PASS inverter chain: internal {internal:.5f} pJ, switching {switching:.5f} pJ, "
           f"leakage {3 * leak:.5f} nW, as computed by hand from the Liberty")
+    return 0
+
+
+def check_wire_cap(energy_py, osu, scratch):
+    """The chain with routed wire on n1 and n2 (--wire-cap, issue 48): each wire's
+    capacitance adds to its net's load, so to the switching energy (K toggles x 1/2 C V^2)
+    and to the driver's internal-power lookup, computed here by hand."""
+    net, vcd, d = replay(energy_py, osu, scratch, "chain", "y", CHAIN, True, "chain")
+    slews = os.path.join(d, "slews.txt")
+    fixed_slews(slews, ["u1", "u2", "u3"], ["A"])
+    wires = {"n1": 0.010, "n2": 0.005}
+    wire_file = os.path.join(d, "wire_cap.txt")
+    with open(wire_file, "w") as f:
+        f.write("".join(f"{n} {c}\n" for n, c in wires.items()) + "no_such_net 0.5\n")
+    e, t = compute(energy_py, osu, net, "chain", vcd, slews, d, "energy_wire", extra=("--wire-cap", wire_file))
+    cap, leak, rise, fall = liberty_invx1(osu)
+    loads = [cap + wires["n1"], cap + wires["n2"], 0.0]
+    internal = sum(K // 2 * interpolate(rise, c) + K // 2 * interpolate(fall, c) for c in loads)
+    switching = 3 * K * 0.5 * cap * VDD * VDD + sum(K * 0.5 * c * VDD * VDD for c in wires.values())
+    close(e["internal_pj"], internal, what="internal energy with wires (pJ)")
+    close(e["switching_pj"], switching, what="switching energy with wires (pJ)")
+    if e["wire_cap_nets"] != 2 or e["wire_cap_unknown_nets"] != 1:
+        print(f"FAIL: wire nets matched {e['wire_cap_nets']}, unknown {e['wire_cap_unknown_nets']}; want 2 and 1")
+        return 1
+    print(f"PASS wire capacitance: internal {internal:.5f} pJ, switching {switching:.5f} pJ with "
+          f"{sum(wires.values())} pF of wire, as computed by hand")
     return 0
 
 
@@ -415,6 +445,8 @@ def main():
         return check_inverter_chain(energy_py, osu, scratch)
     if check == "glitch":
         return check_glitch(energy_py, osu, scratch)
+    if check == "wire_cap":
+        return check_wire_cap(energy_py, osu, scratch)
     if check == "openSTA":
         return check_openSTA(energy_py, osu, scratch)
     if check == "rom_monotonic":

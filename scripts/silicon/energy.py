@@ -646,6 +646,24 @@ def compute(args):
             e = lib.pin(ctype, pin)
             if e and e["direction"] == "input":
                 load[find(k)] += e["cap"]
+    # after layout (scripts/layout.sh): each net's routed wire capacitance on top of its
+    # pins' (a file of "NET PF" lines, NET a top-level net of the flat netlist or
+    # a/b/net through instances, bus bits as net[3])
+    wire_pf, wire_nets, wire_unknown = 0.0, 0, []
+    if args.wire_cap:
+        known = set(parent_keys_of(modules, args.top))
+        for line in open(args.wire_cap):
+            p = line.split()
+            if len(p) != 2 or p[0].startswith("#"):
+                continue
+            *path, bit = p[0].split("/")
+            k = (tuple(path), bit)
+            if k not in known:
+                wire_unknown.append(p[0])
+                continue
+            load[find(k)] += float(p[1])
+            wire_pf += float(p[1])
+            wire_nets += 1
     slews = {}
     if args.slews:
         for line in open(args.slews):
@@ -744,6 +762,8 @@ def compute(args):
         "rom_energy_per_read_pj": {g: read_vcd.groups_energy[g] for g in groups},
         "checkpoints": [(round(t / 1e3, 3), r, round(e, 4)) for t, r, e in checkpoints],
         "cells": len(leaves),
+        "wire_cap_pf": wire_pf, "wire_cap_nets": wire_nets,
+        "wire_cap_unknown_nets": len(wire_unknown),
     }
     if args.toggles_out:
         with open(args.toggles_out, "w") as f:
@@ -752,6 +772,10 @@ def compute(args):
                     f.write(f"{_netname(net)} {rises[net]} {falls[net]}\n")
     json.dump(out, open(args.out, "w"), indent=1)
     return 0
+
+
+def parent_keys_of(modules, top):
+    return list(_all_keys(modules, top))
 
 
 def _fix_bit(bit):
@@ -980,6 +1004,7 @@ def main():
     c.add_argument("--clock")
     c.add_argument("--t-begin", type=float, default=0.0)
     c.add_argument("--toggles-out")
+    c.add_argument("--wire-cap", help="NET PF lines: routed wire capacitance per net (scripts/layout.sh)")
     c.add_argument("--counter", help="tools/vcd_activity/specular_vcd_activity: count with it "
                    "(the same rules as this file's reader, which counts without it)")
     c.add_argument("--out", required=True)

@@ -25,11 +25,17 @@ The constants below are the whole model; docs/silicon.md quotes them.
       exit 1, naming it); one macro per distinct (words, width, contents): ROM5_MACRO
       (32768 x 22) and ROM38_MACRO (16384 x 25, plus ROM38_BANK_MACRO, the one bank, for
       the report) keep their names and figures, any other is ROM_<words>X<width>_MACRO
-      (a letter after it when two tables share a size). Also writes each macro's words
+      (a letter after it when two tables share a size). Also writes rom_macros.lef, the
+      macros' abstracts for placement and routing (scripts/layout.sh), and each macro's words
       (NAME.hex, from the memory's INIT, read by its simulation model), a techmap per
       macro (rom_macro_map_NAME.v, from rom_macro_map.v) and rom_macro_map.ys (the
       techmap commands, each selecting its memories by module/cell).
       Without MEMORIES_JSON: the device's three macros (images rom5.hex, rom38.hex).
+
+  rom_model.py --lef ROM_MODEL_JSON OUT_LEF [NAME ...]
+      the LEF abstracts alone, from the figures of an earlier run's rom_model.json; with
+      NAMEs only those macros (qflow 1.3.17's blif2cel.tcl, reading a hard-macro LEF,
+      never finds the end of a macro the netlist does not use and skips every one after it).
 """
 import json
 import math
@@ -218,6 +224,63 @@ def behavioural(models, images=None):
     return "\n".join(out) + "\n"
 
 
+# The LEF abstract of a macro (scripts/layout.sh): an outline of the model's area with the
+# bit array's aspect (columns wide, rows high, the same bit cell), its pins on metal2 along
+# the bottom edge, and obstructions on metal1-3 over the rest (the array and its decoders
+# use them) but a channel along the pins on metal2 and metal3 (LEF_CHANNEL_UM), where the
+# router reaches them even when the placer puts that edge against the die's; metal4-6
+# stay free for routing over the macro. No power pins: the model has no
+# supply network, and the layout does not connect one (docs/silicon.md says so).
+LEF_GRID_X_UM = 1.6          # twice the metal2 pitch (0.8 um): pins on every other track
+LEF_GRID_Y_UM = 10.0         # the standard-cell row height
+LEF_PIN_DEPTH_UM = 1.0       # a pin's length into the macro on metal2
+LEF_PIN_WIDTH_UM = 0.4       # a via's metal2 pad (osu018_stdcells.lef: M2_M1, M3_M2): no notch where they meet
+LEF_CHANNEL_UM = 8.0         # metal2 and metal3 obstructions start this far above the pins
+LEF_OBS_LAYERS = ("metal1", "metal2", "metal3")
+
+
+def outline(m):
+    """Width and height (um) of a macro: its area at the bit array's aspect, rounded up
+    to the placement grid."""
+    aspect = m["columns"] / m["rows"]   # the bit cell is square
+    w = math.sqrt(m["area_um2"] * aspect)
+    h = m["area_um2"] / w
+    snap = lambda v, g: math.ceil(v / g - 1e-9) * g
+    return round(snap(w, LEF_GRID_X_UM), 3), round(snap(h, LEF_GRID_Y_UM), 3)
+
+
+def lef(models):
+    out = ["# ROM macros of the specular device: LEF abstracts of the first-principles model,",
+           "# scripts/silicon/rom_model.py (the same figures as rom_macros.lib)",
+           "VERSION 5.4 ;", "NAMESCASESENSITIVE ON ;", 'BUSBITCHARS "[]" ;', 'DIVIDERCHAR "/" ;',
+           "UNITS", "  DATABASE MICRONS 1000 ;", "END UNITS", ""]
+    for m in models:
+        w, h = outline(m)
+        pins = [f"A[{k}]" for k in range(m["address_bits"])] + [f"Q[{k}]" for k in range(m["width"])]
+        slots = int(w // LEF_GRID_X_UM) - 1
+        if slots < len(pins):
+            raise SystemExit(f"rom_model.py: macro {m['name']} is {w} um wide, too narrow for "
+                             f"{len(pins)} pins at {LEF_GRID_X_UM} um")
+        step = slots // (len(pins) + 1)
+        out += [f"MACRO {m['name']}", "  CLASS BLOCK ;", f"  FOREIGN {m['name']} 0.000 0.000 ;",
+                "  ORIGIN 0.000 0.000 ;", f"  SIZE {w:.3f} BY {h:.3f} ;", "  SYMMETRY X Y ;"]
+        for k, pin in enumerate(pins):
+            # on a metal2 track when the macro's x is (qflow's tracks: 0.8 um from the die corner)
+            x = (k + 1) * step * LEF_GRID_X_UM
+            direction = "INPUT" if pin.startswith("A") else "OUTPUT"
+            out += [f"  PIN {pin}", f"    DIRECTION {direction} ;", "    USE SIGNAL ;", "    PORT",
+                    "      LAYER metal2 ;",
+                    f"        RECT {x - LEF_PIN_WIDTH_UM / 2:.3f} 0.000 {x + LEF_PIN_WIDTH_UM / 2:.3f} {LEF_PIN_DEPTH_UM:.3f} ;",
+                    "    END", f"  END {pin}"]
+        out.append("  OBS")
+        for layer in LEF_OBS_LAYERS:
+            y0 = 0.0 if layer == "metal1" else LEF_PIN_DEPTH_UM + LEF_CHANNEL_UM
+            out += [f"    LAYER {layer} ;", f"      RECT 0.000 {y0:.3f} {w:.3f} {h:.3f} ;"]
+        out += ["  END", f"END {m['name']}", ""]
+    out.append("END LIBRARY")
+    return "\n".join(out) + "\n"
+
+
 MAP_TEMPLATE = "rom_macro_map.v"   # beside this file; NAME, ABITS placeholders
 
 
@@ -257,6 +320,13 @@ def hex_words(init, words, width):
 
 
 def main():
+    if len(sys.argv) >= 4 and sys.argv[1] == "--lef":
+        models = json.load(open(sys.argv[2]))["macros"]
+        if len(sys.argv) > 4:   # only these (qflow's blif2cel reads past an unused macro)
+            models = [m for m in models if m["name"] in sys.argv[4:]]
+        with open(sys.argv[3], "w") as f:
+            f.write(lef(models))
+        return 0
     if len(sys.argv) not in (2, 3):
         sys.stderr.write("usage: rom_model.py OUT_DIR [MEMORIES_JSON]\n")
         return 2
@@ -318,10 +388,12 @@ def main():
         f.write(liberty(models))
     with open(f"{out}/rom_macros_bb.v", "w") as f:
         f.write(blackboxes(models))
+    with open(f"{out}/rom_macros.lef", "w") as f:
+        f.write(lef(models))
     with open(f"{out}/rom_macros_sim.v", "w") as f:
         f.write(behavioural(models, images))
     constants = {k: v for k, v in globals().items()
-                 if k.isupper() and k not in ("AREA", "MACROS", "MAP_TEMPLATE")}
+                 if k.isupper() and k not in ("AREA", "MACROS", "MAP_TEMPLATE", "LEF_OBS_LAYERS")}
     with open(f"{out}/rom_model.json", "w") as f:
         json.dump({"constants": constants, "macros": models, "instances": instances}, f, indent=1)
     return 0

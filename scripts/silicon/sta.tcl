@@ -1,11 +1,14 @@
 # OpenSTA run of scripts/silicon.sh: reads the libraries and the mapped netlist, finds
 # T_sta (the smallest clock period with no negative setup slack, bisection to 0.01 ns),
 # and at T_sta writes the reports, the SDC and the SDF. Variables from the caller (sta
-# -exit with `set` lines before this file): lib, rom_lib, netlist, top, top_dir, out.
+# -exit with `set` lines before this file): lib, rom_lib, netlist, top, top_dir, out;
+# after layout (scripts/layout.sh) also spef, the routed wires' R and C, and rom_lib may
+# be empty (a block without ROM macros).
 read_liberty $lib
-read_liberty $rom_lib
+if {$rom_lib ne ""} { read_liberty $rom_lib }
 read_verilog $netlist
 link_design $top
+if {[info exists spef]} { read_spef $spef }
 source $top_dir/constraints.tcl
 
 proc worst_setup_slack {T} {
@@ -36,7 +39,11 @@ write_sdc -no_timestamp $out/constraints.sdc
 write_sdf -no_timestamp -digits 4 $out/device.sdf
 
 # The named paths of the top, each worst path in full (the report counts its cells).
-foreach path [named_paths] {
+# After layout the netlist is flat and its instances renamed by qflow (NAND2X1_12):
+# the named paths' hierarchical pins do not exist, the worst paths below are named
+# through instances.tsv instead (scripts/silicon/layout_report.py).
+set paths [expr {[info exists spef] ? {} : [named_paths]}]
+foreach path $paths {
   lassign $path name from to sentence
   set f [open $out/path_$name.txt w]
   puts $f "# $sentence"

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""layout_block: scripts/layout.sh lays out Fig. 2's control unit end to end (issue 48).
+
+  layout_block_test.py PROJECT_ROOT SCRATCH [PLANT]
+
+Maps control_unit16 onto the OSU 0.18 um cells with Yosys as scripts/silicon.sh does
+(Fig. 2's gates kept as the library cells of scripts/silicon/fig2_cells.v), then runs
+scripts/layout.sh on it.
+  - Without PLANT: layout.sh exits 0 and its summary says no unrouted net, 0 DRC errors,
+    LVS match; the layout holds the 10 cells of Fig. 2 (inverter 44, AND 40, NANDs 45-47,
+    flip-flops 41-43, the two /Q inverters: written here from the figure, docs/silicon.md)
+    and a BUFX2 from vdd per constant (the library has no tie cell), and a die no smaller
+    than their area (from the LEF, read here); some wire is routed.
+  - PLANT = drc, lvs or unrouted: layout.sh --plant PLANT must exit 1 and name that
+    fault on standard error (the checks can fail).
+Exit 0 pass, 1 fail.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+FIG2_CELLS = {"INVX1": 3, "AND2X1": 1, "NAND3X1": 2, "NAND2X1": 1, "DFFSR": 3}
+FAULT_WORDS = {"drc": "DRC errors", "lvs": "LVS mismatch", "unrouted": "nets unrouted"}
+OSU018 = "/usr/share/qflow/tech/osu018"
+
+
+def fail(msg):
+    print(f"FAIL: {msg}")
+    sys.exit(1)
+
+
+def main():
+    if len(sys.argv) not in (3, 4):
+        print("usage: layout_block_test.py PROJECT_ROOT SCRATCH [drc|lvs|unrouted]")
+        return 2
+    root, scratch = sys.argv[1], sys.argv[2]
+    plant = sys.argv[3] if len(sys.argv) == 4 else ""
+    shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(scratch)
+    lib = f"{OSU018}/osu018_stdcells.lib"
+    netlist = f"{scratch}/control_unit16.v"
+    prims = " ".join(f"{root}/rtl/primitives/{f}" for f in sorted(os.listdir(f"{root}/rtl/primitives")))
+    script = (f"read_liberty -lib {lib}; read_verilog {prims} {root}/rtl/device/control_unit16.v; "
+              f"read_verilog -overwrite {root}/scripts/silicon/fig2_cells.v; "
+              "hierarchy -check -top control_unit16; flatten; proc; opt; techmap; opt; "
+              f"dfflibmap -liberty {lib}; abc -fast -liberty {lib}; opt_clean; "
+              f"write_verilog -noattr {netlist}")
+    r = subprocess.run(["yosys", "-q", "-p", script], capture_output=True, text=True)
+    if r.returncode != 0:
+        fail(f"yosys could not map control_unit16: {r.stderr[-500:]}")
+    cmd = ["bash", f"{root}/scripts/layout.sh", "--netlist", netlist, "--top", "control_unit16"]
+    if plant:
+        cmd += ["--plant", plant]
+    out = f"{scratch}/layout"
+    r = subprocess.run(cmd + [out], capture_output=True, text=True)
+    print(r.stdout[-2000:], r.stderr[-2000:])
+    if plant:
+        if r.returncode != 1:
+            fail(f"layout.sh --plant {plant} exited {r.returncode}, not 1")
+        if FAULT_WORDS[plant] not in r.stderr:
+            fail(f"layout.sh --plant {plant} did not say '{FAULT_WORDS[plant]}'")
+        print(f"PASS: the planted {plant} fault fails the layout")
+        return 0
+    if r.returncode != 0:
+        fail(f"layout.sh exited {r.returncode}")
+    s = json.load(open(f"{out}/layout_summary.json"))
+    if s["unrouted_nets"] != 0 or s["drc_errors"] != 0 or not s["lvs_match"]:
+        fail(f"unrouted {s['unrouted_nets']}, DRC {s['drc_errors']}, LVS {s['lvs_match']}")
+    # the cells in the layout's DEF, counted here by cell name: Fig. 2's and one BUFX2
+    # from vdd or gnd per constant the mapped netlist uses (the library has no tie cell)
+    text = open(netlist).read()
+    expected = dict(FIG2_CELLS)
+    ties = int(bool(re.search(r"1'[bh]1", text))) + int(bool(re.search(r"1'[bh]0", text)))
+    if ties:
+        expected["BUFX2"] = ties
+    placed = {}
+    for m in re.finditer(r"^-\s+\S+\s+(\S+)\s+\+\s+PLACED", open(f"{out}/qflow/control_unit16_route.def").read(), re.M):
+        if m.group(1) != "FILL":
+            placed[m.group(1)] = placed.get(m.group(1), 0) + 1
+    if placed != expected:
+        fail(f"placed cells {placed}, Fig. 2 and the ties: {expected}")
+    sizes, name = {}, None
+    for line in open(f"{OSU018}/osu018_stdcells.lef"):
+        if line.startswith("MACRO "):
+            name = line.split()[1]
+        m = re.match(r"\s*SIZE\s+([\d.]+)\s+BY\s+([\d.]+)", line)
+        if m and name:
+            sizes[name] = float(m.group(1)) * float(m.group(2))
+    cell_area = sum(sizes[c] * n for c, n in expected.items())
+    if s["die_area_mm2"] * 1e6 < cell_area:
+        fail(f"die {s['die_area_mm2']} mm^2 smaller than the cells' {cell_area} um^2")
+    if abs(s["standard_cell_area_um2"] - cell_area) > 0.5:
+        fail(f"cell area {s['standard_cell_area_um2']} um^2, the LEF gives {cell_area}")
+    if s["wire_length_total_um"] <= 0:
+        fail("no wire routed")
+    print(f"PASS: control unit laid out: die {s['die_area_mm2']} mm^2, {sum(placed.values())} cells, "
+          f"wire {s['wire_length_total_um']} um, DRC 0, LVS match, none unrouted")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

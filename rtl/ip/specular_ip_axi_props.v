@@ -5,7 +5,7 @@
 //     rules are asserted, the master's assumed;
 //   - otherwise (Icarus testbenches): every rule is checked each clock edge and a
 //     broken one stops the simulation ($fatal) naming it.
-// The slave's rules: in reset and the cycle after it BVALID and RVALID are low; a
+// The slave's rules: after a clock edge in reset BVALID and RVALID are low; a
 // response is held with its payload until READY; BRESP and RRESP are never EXOKAY
 // (AXI4-Lite has no exclusive access); a response only for a request (an AW and a W
 // taken, or an AR taken, not yet answered) and for each request a response within
@@ -89,7 +89,9 @@ module specular_ip_axi_props #(
     end
 
     // ---- the slave (proved) ----
-    `SPECULAR_AXI_SLAVE(!in_reset || (!bvalid && !rvalid), "BVALID and RVALID low in reset and the cycle after it")
+    // (a synchronous reset: from the first clock edge with ARESETn low until one after it rose)
+    `SPECULAR_AXI_SLAVE(!(past_valid && !p_aresetn) || (!bvalid && !rvalid),
+                        "BVALID and RVALID low after a clock edge in reset")
     if (past_valid && p_aresetn && aresetn) begin
       `SPECULAR_AXI_SLAVE(!(p_bvalid && !p_bready) || (bvalid && bresp == p_bresp),
                           "BVALID and BRESP held until BREADY")

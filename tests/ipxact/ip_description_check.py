@@ -38,7 +38,7 @@ IPXACT_ACCESS = {
     "read_only": ("read-only", None),
     "read_write": ("read-write", None),
     "write_1_to_clear": ("read-write", "oneToClear"),
-    "self_clearing": ("read-write", "modify"),
+    "self_clearing": ("write-only", None),
 }
 # C++ Access -> SystemRDL properties that must hold
 RDL_ACCESS = {
@@ -113,6 +113,7 @@ def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word):
         access, mwv = IPXACT_ACCESS[cf["access"]]
         fail.equal(text_of(xf, "access"), access, f"{at} access")
         fail.equal(text_of(xf, "modifiedWriteValue"), mwv, f"{at} modifiedWriteValue")
+        fail.equal(text_of(xf, "volatile"), "true" if cf["volatile"] else None, f"{at} volatile")
         values = [(text_of(v, "name"), sv_number(text_of(v, "value")))
                   for v in xf.findall(f"{Q}enumeratedValues/{Q}enumeratedValue")]
         fail.equal(values, [(v["name"], v["value"]) for v in cf["values"]], f"{at} enumeratedValues")
@@ -233,7 +234,9 @@ def check_rdl_fields(fail, where, comp, cpp_fields, reset_word, enums):
         fail.equal(lsb, cf["shift"], f"{at} lsb")
         fail.equal(None if msb is None else msb - lsb + 1, cf["width"], f"{at} width")
         fail.equal(fi.reset, field_reset(reset_word, cf), f"{at} reset")
-        want = RDL_ACCESS[cf["access"]]
+        want = dict(RDL_ACCESS[cf["access"]])
+        if not cf["hardware_writes"]:
+            want["hw"] = "na"  # a constant: no hardware input
         got = {k: fc.properties.get(k) for k in want}
         fail.equal(got, want, f"{at} access")
         extra = [k for k in RDL_WRITE_EFFECTS if k in fc.properties and k not in want]

@@ -1,4 +1,5 @@
 #include "ipxact_writer.h"
+#include "register_roles.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -81,9 +82,10 @@ FieldAccessWords access_words(Access access) {
     case Access::read_only: return {"read-only", ""};
     case Access::read_write: return {"read-write", ""};
     case Access::write_1_to_clear: return {"read-write", "oneToClear"};
-    // A write of 1 acts and the field reads 0: "modify" (the value after a write is
-    // not the value written; the description says how).
-    case Access::self_clearing: return {"read-write", "modify"};
+    // A write of 1 acts and the field reads 0: write-only, as the RDL's `sw = w;
+    // singlepulse` and the tables' W (modifiedWriteValue=modify made PeakRDL-ipxact's
+    // importer refuse the file: "onwrite = wuser" on a field that is not external).
+    case Access::self_clearing: return {"write-only", ""};
   }
   return {"read-only", ""};
 }
@@ -106,9 +108,8 @@ void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset) {
   x.close("reset");
   x.close("resets");
   x.leaf("bitWidth", std::to_string(f.width));
-  if (f.access == Access::write_1_to_clear || f.access == Access::self_clearing ||
-      f.values == FieldValues::error_cause || f.reg == Reg::status)
-    x.leaf("volatile", "true");  // the device changes it
+  if (is_volatile(f.reg))  // the device changes it (register_roles.h)
+    x.leaf("volatile", "true");
   const FieldAccessWords words = access_words(f.access);
   x.leaf("access", words.access);
   if (f.values != FieldValues::none) {

@@ -19,9 +19,9 @@
 `default_nettype none
 
 module specular_ip_axi #(
-  parameter [31:0] CONFIG_VALUE = 32'h080D1000,  // patent constants and normalisation, clamp
-  parameter [31:0] PIN19_H_VALUE = 32'h00000080, // h = 1/2
-  parameter [31:0] PIN20_A_VALUE = 32'h00400000, // a = 1.0
+  parameter [31:0] CONFIG_VALUE = 135073792,     // 0x080D1000: patent constants and normalisation, clamp
+  parameter [31:0] PIN19_H_VALUE = 128,          // 0x80: h = 1/2
+  parameter [31:0] PIN20_A_VALUE = 4194304,      // 0x400000: a = 1.0
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex"
 ) (
   input  wire        aclk,

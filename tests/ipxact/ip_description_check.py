@@ -141,18 +141,35 @@ def check_bus_interface(fail, root, bus_trees):
         fail.check(got == want, f"{what}: {got!r}, the definition in ip/ is {want!r}")
     same(vlnv_ref(abs_def.find(Q + "busType")), vlnv_of(bus_def), "the abstraction's busType")
     interfaces = root.findall(f"{Q}busInterfaces/{Q}busInterface")
-    fail.equal(len(interfaces), 1, "bus interfaces")
-    for bi in interfaces:
+    fail.equal([text_of(bi, "name") for bi in interfaces], ["socket", "s_axi"], "bus interfaces")
+    physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
+    for bi in interfaces[:1]:
         same(vlnv_ref(bi.find(Q + "busType")), vlnv_of(bus_def), "busType")
         refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
         same([vlnv_ref(r) for r in refs], [vlnv_of(abs_def)], "abstractionRef")
         logical = {text_of(p, "logicalName") for p in abs_def.findall(f"{Q}ports/{Q}port")}
-        physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
         for pm in bi.iter(Q + "portMap"):
             lp = pm.find(f"{Q}logicalPort/{Q}name").text
             pp = pm.find(f"{Q}physicalPort/{Q}name").text
             fail.check(lp in logical, f"portMap: no logical port {lp} in {BUS_FILES[1]}")
             fail.check(pp in physical, f"portMap: no port {pp} in the model")
+    # The Verilog view of the whole IP: ARM's AXI4-Lite definitions, every signal of
+    # AXI4-Lite's RTL abstraction (AMBA AXI and ACE spec., B1.1) mapped to a port of it.
+    for bi in interfaces[1:]:
+        same(vlnv_ref(bi.find(Q + "busType")), ("amba.com", "AMBA4", "AXI4-Lite", "r0p0_0"), "s_axi busType")
+        refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
+        same([vlnv_ref(r) for r in refs], [("amba.com", "AMBA4", "AXI4-Lite_rtl", "r0p0_0")],
+             "s_axi abstractionRef")
+        mapped = {pm.find(f"{Q}logicalPort/{Q}name").text: pm.find(f"{Q}physicalPort/{Q}name").text
+                  for pm in bi.iter(Q + "portMap")}
+        fail.equal(sorted(mapped), sorted(AXI4_LITE_SIGNALS), "s_axi logical ports")
+        for lp, pp in mapped.items():
+            fail.check(pp in physical, f"s_axi portMap {lp}: no port {pp} in the model")
+
+
+AXI4_LITE_SIGNALS = ("ACLK", "ARESETn", "AWVALID", "AWREADY", "AWADDR", "AWPROT", "WVALID",
+                     "WREADY", "WDATA", "WSTRB", "BVALID", "BREADY", "BRESP", "ARVALID",
+                     "ARREADY", "ARADDR", "ARPROT", "RVALID", "RREADY", "RDATA", "RRESP")
 
 
 def check_ipxact(export, source, scratch):
@@ -190,7 +207,8 @@ def check_ipxact(export, source, scratch):
     fail.equal(sv_number(text_of(block, "width")), 32, "width")
     # the bus interface names this memory map
     refs = root.findall(f"{Q}busInterfaces/{Q}busInterface/{Q}slave/{Q}memoryMapRef")
-    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(maps[0], "name")], "slave memoryMapRef")
+    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(maps[0], "name")] * 2,
+               "slave memoryMapRef (socket, s_axi)")
     entries = [e for e in block if e.tag in (Q + "register", Q + "registerFile")]
     fail.equal([text_of(e, "name") for e in entries], [r["name"] for r in cpp["registers"]],
                "registers, register files and arrays in order")
@@ -293,8 +311,9 @@ def check_systemrdl(export, source, scratch):
 
 # ---- the Verilog tops ----------------------------------------------------------------
 
-TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync"}
-RTL_FOLDERS = ("device", "primitives", "design_space")  # rtl/sources.cmake
+TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync", "specular_ip_axi": "rtl_axi"}
+TOP_FOLDER = {"specular_device": "device", "specular_device_sync": "device", "specular_ip_axi": "ip"}
+RTL_FOLDERS = ("device", "primitives", "design_space", "ip")  # rtl/sources.cmake
 
 
 def yosys_json(yosys, rom_dir, script, out):
@@ -325,7 +344,7 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
                      for f in os.listdir(os.path.join(rtl, d)) if f.endswith(".v"))
     parameter_of = {p.get("parameterId"): p for p in root.iter(Q + "parameter", Q + "moduleParameter")}
     for index, (top, view) in enumerate(TOPS.items()):
-        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/device/{top}.v",
+        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{TOP_FOLDER[top]}/{top}.v; proc",
                              os.path.join(scratch, f"{top}.json"))
         ports = modules[top]["ports"]
         # every Verilog port, in order, with its direction, width and signedness

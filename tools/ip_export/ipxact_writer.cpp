@@ -215,10 +215,12 @@ const SystemCView systemc_views[] = {
 };
 
 std::string view_of_top(const VerilogModule& top) {
-  return top.name == "specular_device" ? "rtl" : top.name == "specular_device_sync" ? "rtl_sync" : top.name;
+  return top.name == "specular_device" ? "rtl" : top.name == "specular_device_sync" ? "rtl_sync"
+         : top.name == "specular_ip_axi" ? "rtl_axi" : top.name;
 }
 std::string prefix_of_top(const VerilogModule& top) {
-  return top.name == "specular_device" ? "device" : top.name == "specular_device_sync" ? "sync" : top.name;
+  return top.name == "specular_device" ? "device" : top.name == "specular_device_sync" ? "sync"
+         : top.name == "specular_ip_axi" ? "axi" : top.name;
 }
 
 void write_views(Xml& x, const ComponentFacts& facts) {
@@ -427,6 +429,55 @@ void write_file_sets(Xml& x, const ComponentFacts& facts) {
   x.close("fileSets");
 }
 
+/// The Verilog view of the whole IP (rtl/ip/specular_ip_axi.v): ARM's AMBA AXI4-Lite bus
+/// definition and RTL abstraction, its signals mapped to the top's ports, the same
+/// memory map (the batch windows are holes there: docs/decisions.md).
+void write_axi_interface(Xml& x, const ComponentFacts& facts) {
+  const VerilogModule* axi = nullptr;
+  for (const VerilogModule& top : facts.tops)
+    if (top.name == "specular_ip_axi") axi = &top;
+  if (axi == nullptr) return;
+  x.open("busInterface");
+  x.leaf("name", "s_axi");
+  x.leaf("description",
+         "AMBA AXI4-Lite slave of specular_ip_axi: 32-bit data, byte strobes, the register "
+         "map 'registers' without the batch windows (docs/rtl_ip.md)");
+  x.empty("busType", "vendor=\"amba.com\" library=\"AMBA4\" name=\"AXI4-Lite\" version=\"r0p0_0\"");
+  x.open("abstractionTypes");
+  x.open("abstractionType");
+  x.leaf("viewRef", view_of_top(*axi));
+  x.empty("abstractionRef",
+          "vendor=\"amba.com\" library=\"AMBA4\" name=\"AXI4-Lite_rtl\" version=\"r0p0_0\"");
+  x.open("portMaps");
+  const std::pair<const char*, const char*> signals[] = {
+      {"ACLK", "aclk"},         {"ARESETn", "aresetn"},
+      {"AWVALID", "s_axi_awvalid"}, {"AWREADY", "s_axi_awready"}, {"AWADDR", "s_axi_awaddr"},
+      {"AWPROT", "s_axi_awprot"},   {"WVALID", "s_axi_wvalid"},   {"WREADY", "s_axi_wready"},
+      {"WDATA", "s_axi_wdata"},     {"WSTRB", "s_axi_wstrb"},     {"BVALID", "s_axi_bvalid"},
+      {"BREADY", "s_axi_bready"},   {"BRESP", "s_axi_bresp"},     {"ARVALID", "s_axi_arvalid"},
+      {"ARREADY", "s_axi_arready"}, {"ARADDR", "s_axi_araddr"},   {"ARPROT", "s_axi_arprot"},
+      {"RVALID", "s_axi_rvalid"},   {"RREADY", "s_axi_rready"},   {"RDATA", "s_axi_rdata"},
+      {"RRESP", "s_axi_rresp"}};
+  for (const auto& [logical, physical] : signals) {
+    x.open("portMap");
+    x.open("logicalPort");
+    x.leaf("name", logical);
+    x.close("logicalPort");
+    x.open("physicalPort");
+    x.leaf("name", physical);
+    x.close("physicalPort");
+    x.close("portMap");
+  }
+  x.close("portMaps");
+  x.close("abstractionType");
+  x.close("abstractionTypes");
+  x.open("slave");
+  x.empty("memoryMapRef", "memoryMapRef=\"registers\"");
+  x.close("slave");
+  x.leaf("bitsInLau", "8");
+  x.close("busInterface");
+}
+
 }  // namespace
 
 std::string ipxact_component(const ComponentFacts& facts) {
@@ -471,6 +522,7 @@ std::string ipxact_component(const ComponentFacts& facts) {
   x.close("slave");
   x.leaf("bitsInLau", "8");
   x.close("busInterface");
+  write_axi_interface(x, facts);
   x.close("busInterfaces");
   write_memory_map(x);
   x.open("model");

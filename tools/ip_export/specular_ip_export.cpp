@@ -110,14 +110,17 @@ int main(int argc, char** argv) {
     try {
       // The folders of rtl/sources.cmake: the device's blocks, the primitives, the
       // design-space tops (read too: a module name must be unique across all three).
-      const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space"});
-      for (const char* top : {"specular_device", "specular_device_sync"}) {
+      // and ip/: the whole IP behind its AXI4-Lite slave (docs/rtl_ip.md)
+      const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space",
+                                         rtl + "/ip"});
+      for (const char* top : {"device/specular_device", "device/specular_device_sync",
+                              "ip/specular_ip_axi"}) {
         // The file as the component names it: relative to the source tree.
-        VerilogModule m = read_module_header(rtl + "/device/" + top + ".v");
-        m.file = std::string("rtl/device/") + top + ".v";
+        VerilogModule m = read_module_header(rtl + "/" + top + ".v");
+        m.file = std::string("rtl/") + top + ".v";
         facts.tops.push_back(m);
         std::vector<std::string> names;  // relative to rtl/ (device/adder8.v)
-        for (const std::string& path : file_closure(modules, top))
+        for (const std::string& path : file_closure(modules, m.name))
           names.push_back(path.substr(rtl.size() + 1));
         facts.top_files.push_back(names);
       }

@@ -75,6 +75,14 @@ while read -r named; do
     { echo "consumer_check: FAIL: specular_unit.xml names $named, which is not installed" >&2; exit 1; }
 done < <(sed -n 's|.*<ipxact:[a-z]*>\(\.\./[^<]*\)<.*|\1|p' "$work/prefix/share/SpecularUnit/ip/specular_unit.xml")
 if [[ $rtl == ON ]]; then grep -q '^\./include/specular/twin/rtl_target\.h$' "$work/files.txt"; fi
+# The whole IP in Verilog from the prefix alone (docs/rtl_ip.md): Verilator reads
+# specular_ip_axi and every module it instantiates from share/SpecularUnit/rtl/.
+if [[ $rtl == ON ]]; then
+  installed_rtl="$work/prefix/share/SpecularUnit/rtl"
+  verilator --lint-only -Wall --top-module specular_ip_axi "$installed_rtl"/ip/*.v \
+    "$installed_rtl"/device/*.v "$installed_rtl"/primitives/*.v ||
+    { echo "consumer_check: FAIL: Verilator cannot read specular_ip_axi from the installed Verilog" >&2; exit 1; }
+fi
 
 # The SystemC BUILD was built with, as the package records it (cmake/SpecularSystemC.cmake):
 # every step below must use that one, the add_subdirectory consumer included.

@@ -399,6 +399,16 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
         for f in ([] if file_set is None else file_set.findall(Q + "file")):
             rel = text_of(f, "name")  # relative to ip/, as installed beside share/SpecularUnit/rtl
             fail.check(os.path.isfile(os.path.join(source, "ip", rel)), f"{rel}: no such file")
+    # the ROM images the tops read ($readmemh), in their own file set, named by every view
+    roms = file_sets.get("rom_images")
+    listed = [] if roms is None else [os.path.basename(text_of(f, "name")) for f in roms.findall(Q + "file")]
+    fail.equal(sorted(listed), ["rom38.hex", "rom5.hex"], "file set rom_images")
+    for name in listed:
+        fail.check(os.path.isfile(os.path.join(rom_dir, name)), f"rom_images: specular_romgen wrote no {name}")
+    for view in TOPS.values():
+        inst = instantiations.get(view)
+        refs = [] if inst is None else [text_of(r, "localName") for r in inst.findall(Q + "fileSetRef")]
+        fail.check("rom_images" in refs, f"{view}: no fileSetRef rom_images")
     fail.check("RTL_TOP" in parameter_of, "no component parameter RTL_TOP")
     # the SystemC headers listed are headers of the package
     headers = file_sets.get("systemc_headers")

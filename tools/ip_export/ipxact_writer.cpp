@@ -286,6 +286,9 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
     x.open("fileSetRef");
     x.leaf("localName", "verilog_" + view_of_top(top));
     x.close("fileSetRef");
+    x.open("fileSetRef");
+    x.leaf("localName", "rom_images");
+    x.close("fileSetRef");
     x.close("componentInstantiation");
   }
   x.close("instantiations");
@@ -426,6 +429,21 @@ void write_file_sets(Xml& x, const ComponentFacts& facts) {
     }
     x.close("fileSet");
   }
+  // ROM 5's and ROM 38's contents, which rom5.v and rom38.v read with $readmemh from the
+  // files their IMAGE parameters name (the tops' ROM5_IMAGE, ROM38_IMAGE)
+  x.open("fileSet");
+  x.leaf("name", "rom_images");
+  x.leaf("description",
+         "The ROM images the Verilog tops read with $readmemh (parameters ROM5_IMAGE, "
+         "ROM38_IMAGE), at the default widths, written by specular_romgen from the C++ "
+         "tables and installed beside the Verilog (share/SpecularUnit/rtl/)");
+  for (const char* image : {"rom5.hex", "rom38.hex"}) {
+    x.open("file");
+    x.leaf("name", std::string("../rtl/") + image);
+    x.leaf("fileType", "user", "user=\"verilogReadmemhImage\"");
+    x.close("file");
+  }
+  x.close("fileSet");
   x.close("fileSets");
 }
 

@@ -97,16 +97,20 @@ const char* register_access(Reg reg) {
   return "read-only";
 }
 
-void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset) {
+/// `with_reset` false: a memory window's word (BATCH_COS, BATCH_OUT), which no reset
+/// touches: a register model then holds no per-word reset check for its 4 096 words.
+void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset, bool with_reset = true) {
   x.open("field");
   x.leaf("name", f.name);
   x.leaf("description", f.description);
   x.leaf("bitOffset", std::to_string(f.shift));
-  x.open("resets");
-  x.open("reset");
-  x.leaf("value", hex_literal((register_reset & f.mask()) >> f.shift));
-  x.close("reset");
-  x.close("resets");
+  if (with_reset) {
+    x.open("resets");
+    x.open("reset");
+    x.leaf("value", hex_literal((register_reset & f.mask()) >> f.shift));
+    x.close("reset");
+    x.close("resets");
+  }
   x.leaf("bitWidth", std::to_string(f.width));
   if (is_volatile(f.reg))  // the device changes it (register_roles.h)
     x.leaf("volatile", "true");
@@ -184,7 +188,7 @@ void write_memory_map(Xml& x) {
       x.leaf("addressOffset", hex_literal(row.offset));
       x.leaf("size", "32");
       x.leaf("access", register_access(row.reg));
-      for (const FieldInfo& f : fields_of(row.reg)) write_field(x, f, row.reset);
+      for (const FieldInfo& f : fields_of(row.reg)) write_field(x, f, row.reset, false);
       x.close("register");
     }
   }

@@ -225,6 +225,7 @@ module specular_ip_axi_tb;
 
   // ---- checks ----
   task check_reset_values;
+    integer k;
     begin
       expect_read(32'h000, 32'h00059965, OKAY);  // ID
       expect_read(32'h004, 32'h00010001, OKAY);  // VERSION
@@ -236,7 +237,11 @@ module specular_ip_axi_tb;
       expect_read(COS, 32'h0, OKAY);
       expect_read(N, 32'h1, OKAY);
       expect_read(R, 32'h0, OKAY);
-      expect_read(OUT_R, 32'h0, OKAY);
+      expect_read(G, 32'h0, OKAY);
+      expect_read(B, 32'h0, OKAY);
+      for (k = 0; k < 11; k = k + 1)             // OUT_R .. NORM39 (0x040-0x068, holes DECERR)
+        expect_read(OUT_R + 4 * k, 32'h0, (k == 3 || k == 19) ? DECERR : OKAY);
+      write(STATUS, 32'h4, OKAY);                // the hole at 0x04C was read: clear the record
       expect_read(32'h068, 32'h0, OKAY);         // NORM39
       expect_read(32'h06C, 32'h80, OKAY);        // PIN19_H
       expect_read(32'h070, 32'h00400000, OKAY);  // PIN20_A
@@ -296,6 +301,7 @@ module specular_ip_axi_tb;
   task check_misuse;
     reg [31:0] data;
     reg [1:0] response;
+    integer k, j;
     begin
       write(N, 32'd40, OKAY);
       write(G, 32'd0, OKAY);
@@ -309,6 +315,16 @@ module specular_ip_axi_tb;
       write(RESULTS, 32'd1, SLVERR);      expect_refusal(8'd4, RESULTS);
       write(ERROR_ADDRESS, 32'd1, SLVERR); expect_refusal(8'd4, ERROR_ADDRESS);
       write(CONTROL, 32'h2, SLVERR);      expect_refusal(8'd5, CONTROL);
+      write(CONTROL, 32'h21, SLVERR);     expect_refusal(8'd5, CONTROL);
+      write(CONTROL, 32'h8000_0001, SLVERR); expect_refusal(8'd5, CONTROL);
+      // every address bit above the map's: a hole, whichever register its low bits name
+      for (k = 15; k < 32; k = k + 1)
+        for (j = 0; j < 43; j = j + 1) begin   // every word up to RESULTS' last
+          expect_read(32'd1 << k | 4 * j, 32'd0, DECERR); expect_refusal(8'd7, 32'd1 << k | 4 * j);
+        end
+      for (k = 15; k < 32; k = k + 1) begin
+        write(32'd1 << k | 32'h024, 32'd7, DECERR);      expect_refusal(8'd7, 32'd1 << k | 32'h024);
+      end
       write(32'h01C, 32'd1, DECERR);      expect_refusal(8'd7, 32'h01C);   // a hole
       expect_read(32'h034, 32'd0, DECERR); expect_refusal(8'd7, 32'h034);
       write(32'h1000, 32'd5, DECERR);     expect_refusal(8'd7, 32'h1000);  // BATCH_COS: left out
@@ -338,6 +354,10 @@ module specular_ip_axi_tb;
       write_strobed(CONTROL, 32'h0000_0001, 4'b0001, OKAY);
       wait_irq;
       expect_read(STATUS, 32'h2, OKAY);
+      write(STATUS, 32'h4, OKAY);                // ERROR alone: DONE stays
+      expect_read(STATUS, 32'h2, OKAY);
+      write(STATUS, 32'hFFFF_FFF9, OKAY);        // every bit but DONE and ERROR: nothing
+      expect_read(STATUS, 32'h2, OKAY);
       write_strobed(STATUS, 32'h0000_0002, 4'b0001, OKAY);
       expect_read(STATUS, 32'h0, OKAY);
       if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq high after a byte W1C of DONE");
@@ -357,7 +377,11 @@ module specular_ip_axi_tb;
   task check_concurrency;
     reg [31:0] data;
     integer busy_seen;
+    reg [31:0] out_before [0:2];
     begin
+      read_raw(OUT_R, out_before[0], data[1:0]);
+      read_raw(OUT_R + 4, out_before[1], data[1:0]);
+      read_raw(OUT_R + 8, out_before[2], data[1:0]);
       fork
         write(CONTROL, 32'h1, OKAY);
         begin
@@ -377,6 +401,19 @@ module specular_ip_axi_tb;
             data = rdata;
             if (rresp !== OKAY) $fatal(1, "MISMATCH STATUS read refused during an operation");
             if (data[0] === 1'b1) busy_seen = busy_seen + 1;
+            if (data[0] === 1'b1 && busy_seen == 1) begin  // OUT_* hold the last results meanwhile
+              #1 rready = 1'b0;
+              araddr = OUT_R + 4 * (busy_seen % 3);
+              arvalid = 1'b1;
+              rready = 1'b1;
+              @(posedge aclk);
+              while (!arready) @(posedge aclk);
+              #1 arvalid = 1'b0;
+              @(posedge aclk);
+              while (!rvalid) @(posedge aclk);
+              if (rdata !== out_before[busy_seen % 3])
+                $fatal(1, "MISMATCH OUT word %0d changed during an operation", busy_seen % 3);
+            end
             #1 rready = 1'b0;
           end
           if (busy_seen == 0) $fatal(1, "MISMATCH STATUS.BUSY never read 1 during an operation");

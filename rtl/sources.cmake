@@ -9,4 +9,8 @@ file(GLOB SPECULAR_RTL_DEVICE_SOURCES CONFIGURE_DEPENDS
      ${SPECULAR_RTL_DIR}/device/*.v ${SPECULAR_RTL_DIR}/primitives/*.v)
 file(GLOB SPECULAR_RTL_DESIGN_SPACE_SOURCES CONFIGURE_DEPENDS ${SPECULAR_RTL_DIR}/design_space/*.v)
 set(SPECULAR_RTL_ALL_SOURCES ${SPECULAR_RTL_DEVICE_SOURCES} ${SPECULAR_RTL_DESIGN_SPACE_SOURCES})
+# ip/: the whole IP, specular_ip_axi (docs/rtl_ip.md): the register block generated from the
+# register map, the AXI4-Lite top, and the checker of its AXI4-Lite rules.
+set(SPECULAR_RTL_IP_SOURCES ${SPECULAR_RTL_DIR}/ip/specular_reg_block.v ${SPECULAR_RTL_DIR}/ip/specular_ip_axi.v)
+set(SPECULAR_RTL_IP_PROPS ${SPECULAR_RTL_DIR}/ip/specular_ip_axi_props.v)
 set(SPECULAR_RTL_INCLUDE_DIR ${SPECULAR_RTL_DIR}/design_space)

@@ -70,13 +70,22 @@ grep -q '^\./share/SpecularUnit/ip/specular_unit\.xml$' "$work/files.txt"  # IP-
 grep -q '^\./share/SpecularUnit/firmware_rv32/example_expected\.h$' "$work/files.txt"  # the example (issue 47)
 grep -q '^\./share/SpecularUnit/toolchains/rv32imac-picolibc\.cmake$' "$work/files.txt"
 # Every file the installed IP-XACT component names (relative to it) is installed; the
-# twin's headers and libraries only in a build with the RTL twin.
+# twin's headers and libraries only in a build with the RTL twin
 while read -r named; do
-  if [[ $rtl != ON && ( $named == *twin* || $named == *rtl_models* ) ]]; then continue; fi
+  # (and the ROM images, which a build without it does not write: ip/CMakeLists.txt)
+  if [[ $rtl != ON && ( $named == *twin* || $named == *rtl_models* || $named == *.hex ) ]]; then continue; fi
   [[ -e "$work/prefix/share/SpecularUnit/ip/$named" ]] ||
     { echo "consumer_check: FAIL: specular_unit.xml names $named, which is not installed" >&2; exit 1; }
 done < <(sed -n 's|.*<ipxact:[a-z]*>\(\.\./[^<]*\)<.*|\1|p' "$work/prefix/share/SpecularUnit/ip/specular_unit.xml")
 if [[ $rtl == ON ]]; then grep -q '^\./include/specular/twin/rtl_target\.h$' "$work/files.txt"; fi
+# The whole IP in Verilog from the prefix alone (docs/rtl_ip.md): Verilator reads
+# specular_ip_axi and every module it instantiates from share/SpecularUnit/rtl/.
+if [[ $rtl == ON ]]; then
+  installed_rtl="$work/prefix/share/SpecularUnit/rtl"
+  verilator --lint-only -Wall --top-module specular_ip_axi "$installed_rtl"/ip/*.v \
+    "$installed_rtl"/device/*.v "$installed_rtl"/primitives/*.v ||
+    { echo "consumer_check: FAIL: Verilator cannot read specular_ip_axi from the installed Verilog" >&2; exit 1; }
+fi
 
 # The SystemC BUILD was built with, as the package records it (cmake/SpecularSystemC.cmake):
 # every step below must use that one, the add_subdirectory consumer included.

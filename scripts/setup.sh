@@ -49,6 +49,7 @@ PACKAGES=(
   qflow graywolf qrouter magic netgen-lvs tcsh klayout  # scripts/layout.sh: place, route, DRC, LVS, the die's picture
   nlohmann-json3-dev
   slurm-wlm munge jq
+  z3  # yosys-smtbmc's solver: the AXI4-Lite properties of specular_ip_axi proved by bounded model checking (rtl/formal/, docs/rtl_ip.md)
   python3-lxml  # tests/ipxact: reads the IP-XACT component back with an XML library (docs/ipxact.md)
   # The firmware header and C driver (firmware/, tests/firmware/): cross-compiled in ctest
   # for rv32imac/ilp32 (with picolibc) and Cortex-M4 (with newlib's headers), and with

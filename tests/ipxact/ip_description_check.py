@@ -38,7 +38,7 @@ IPXACT_ACCESS = {
     "read_only": ("read-only", None),
     "read_write": ("read-write", None),
     "write_1_to_clear": ("read-write", "oneToClear"),
-    "self_clearing": ("read-write", "modify"),
+    "self_clearing": ("write-only", None),
 }
 # C++ Access -> SystemRDL properties that must hold
 RDL_ACCESS = {
@@ -109,10 +109,13 @@ def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word):
         fail.equal(sv_number(text_of(xf, "bitOffset")), cf["shift"], f"{at} bitOffset")
         fail.equal(sv_number(text_of(xf, "bitWidth")), cf["width"], f"{at} bitWidth")
         resets = xf.findall(f"{Q}resets/{Q}reset/{Q}value")
-        fail.equal([sv_number(r.text) for r in resets], [field_reset(reset_word, cf)], f"{at} reset")
+        # a memory window's words (reset_word None) have no reset
+        fail.equal([sv_number(r.text) for r in resets],
+                   [] if reset_word is None else [field_reset(reset_word, cf)], f"{at} reset")
         access, mwv = IPXACT_ACCESS[cf["access"]]
         fail.equal(text_of(xf, "access"), access, f"{at} access")
         fail.equal(text_of(xf, "modifiedWriteValue"), mwv, f"{at} modifiedWriteValue")
+        fail.equal(text_of(xf, "volatile"), "true" if cf["volatile"] else None, f"{at} volatile")
         values = [(text_of(v, "name"), sv_number(text_of(v, "value")))
                   for v in xf.findall(f"{Q}enumeratedValues/{Q}enumeratedValue")]
         fail.equal(values, [(v["name"], v["value"]) for v in cf["values"]], f"{at} enumeratedValues")
@@ -140,18 +143,35 @@ def check_bus_interface(fail, root, bus_trees):
         fail.check(got == want, f"{what}: {got!r}, the definition in ip/ is {want!r}")
     same(vlnv_ref(abs_def.find(Q + "busType")), vlnv_of(bus_def), "the abstraction's busType")
     interfaces = root.findall(f"{Q}busInterfaces/{Q}busInterface")
-    fail.equal(len(interfaces), 1, "bus interfaces")
-    for bi in interfaces:
+    fail.equal([text_of(bi, "name") for bi in interfaces], ["socket", "s_axi"], "bus interfaces")
+    physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
+    for bi in interfaces[:1]:
         same(vlnv_ref(bi.find(Q + "busType")), vlnv_of(bus_def), "busType")
         refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
         same([vlnv_ref(r) for r in refs], [vlnv_of(abs_def)], "abstractionRef")
         logical = {text_of(p, "logicalName") for p in abs_def.findall(f"{Q}ports/{Q}port")}
-        physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
         for pm in bi.iter(Q + "portMap"):
             lp = pm.find(f"{Q}logicalPort/{Q}name").text
             pp = pm.find(f"{Q}physicalPort/{Q}name").text
             fail.check(lp in logical, f"portMap: no logical port {lp} in {BUS_FILES[1]}")
             fail.check(pp in physical, f"portMap: no port {pp} in the model")
+    # The Verilog view of the whole IP: ARM's AXI4-Lite definitions, every signal of
+    # AXI4-Lite's RTL abstraction (AMBA AXI and ACE spec., B1.1) mapped to a port of it.
+    for bi in interfaces[1:]:
+        same(vlnv_ref(bi.find(Q + "busType")), ("amba.com", "AMBA4", "AXI4-Lite", "r0p0_0"), "s_axi busType")
+        refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
+        same([vlnv_ref(r) for r in refs], [("amba.com", "AMBA4", "AXI4-Lite_rtl", "r0p0_0")],
+             "s_axi abstractionRef")
+        mapped = {pm.find(f"{Q}logicalPort/{Q}name").text: pm.find(f"{Q}physicalPort/{Q}name").text
+                  for pm in bi.iter(Q + "portMap")}
+        fail.equal(sorted(mapped), sorted(AXI4_LITE_SIGNALS), "s_axi logical ports")
+        for lp, pp in mapped.items():
+            fail.check(pp in physical, f"s_axi portMap {lp}: no port {pp} in the model")
+
+
+AXI4_LITE_SIGNALS = ("ACLK", "ARESETn", "AWVALID", "AWREADY", "AWADDR", "AWPROT", "WVALID",
+                     "WREADY", "WDATA", "WSTRB", "BVALID", "BREADY", "BRESP", "ARVALID",
+                     "ARREADY", "ARADDR", "ARPROT", "RVALID", "RREADY", "RDATA", "RRESP")
 
 
 def check_ipxact(export, source, scratch):
@@ -189,7 +209,8 @@ def check_ipxact(export, source, scratch):
     fail.equal(sv_number(text_of(block, "width")), 32, "width")
     # the bus interface names this memory map
     refs = root.findall(f"{Q}busInterfaces/{Q}busInterface/{Q}slave/{Q}memoryMapRef")
-    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(maps[0], "name")], "slave memoryMapRef")
+    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(maps[0], "name")] * 2,
+               "slave memoryMapRef (socket, s_axi)")
     entries = [e for e in block if e.tag in (Q + "register", Q + "registerFile")]
     fail.equal([text_of(e, "name") for e in entries], [r["name"] for r in cpp["registers"]],
                "registers, register files and arrays in order")
@@ -213,7 +234,8 @@ def check_ipxact(export, source, scratch):
             fail.equal(sv_number(text_of(xe, "size")), 32, f"{name} size")
             fail.check(len(set(row["reset_of_word"])) == 1,
                        f"{name}: words with different resets cannot be one register array")
-            check_ipxact_fields(fail, name, xe, row["fields"], row["reset_of_word"][0])
+            check_ipxact_fields(fail, name, xe, row["fields"],
+                                None if row["words"] > 1 else row["reset_of_word"][0])
     return fail.finish("ipxact")
 
 
@@ -233,7 +255,9 @@ def check_rdl_fields(fail, where, comp, cpp_fields, reset_word, enums):
         fail.equal(lsb, cf["shift"], f"{at} lsb")
         fail.equal(None if msb is None else msb - lsb + 1, cf["width"], f"{at} width")
         fail.equal(fi.reset, field_reset(reset_word, cf), f"{at} reset")
-        want = RDL_ACCESS[cf["access"]]
+        want = dict(RDL_ACCESS[cf["access"]])
+        if not cf["hardware_writes"]:
+            want["hw"] = "na"  # a constant: no hardware input
         got = {k: fc.properties.get(k) for k in want}
         fail.equal(got, want, f"{at} access")
         extra = [k for k in RDL_WRITE_EFFECTS if k in fc.properties and k not in want]
@@ -290,8 +314,9 @@ def check_systemrdl(export, source, scratch):
 
 # ---- the Verilog tops ----------------------------------------------------------------
 
-TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync"}
-RTL_FOLDERS = ("device", "primitives", "design_space")  # rtl/sources.cmake
+TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync", "specular_ip_axi": "rtl_axi"}
+TOP_FOLDER = {"specular_device": "device", "specular_device_sync": "device", "specular_ip_axi": "ip"}
+RTL_FOLDERS = ("device", "primitives", "design_space", "ip")  # rtl/sources.cmake
 
 
 def yosys_json(yosys, rom_dir, script, out):
@@ -322,7 +347,7 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
                      for f in os.listdir(os.path.join(rtl, d)) if f.endswith(".v"))
     parameter_of = {p.get("parameterId"): p for p in root.iter(Q + "parameter", Q + "moduleParameter")}
     for index, (top, view) in enumerate(TOPS.items()):
-        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/device/{top}.v",
+        modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{TOP_FOLDER[top]}/{top}.v; proc",
                              os.path.join(scratch, f"{top}.json"))
         ports = modules[top]["ports"]
         # every Verilog port, in order, with its direction, width and signedness
@@ -377,6 +402,16 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
         for f in ([] if file_set is None else file_set.findall(Q + "file")):
             rel = text_of(f, "name")  # relative to ip/, as installed beside share/SpecularUnit/rtl
             fail.check(os.path.isfile(os.path.join(source, "ip", rel)), f"{rel}: no such file")
+    # the ROM images the tops read ($readmemh), in their own file set, named by every view
+    roms = file_sets.get("rom_images")
+    listed = [] if roms is None else [os.path.basename(text_of(f, "name")) for f in roms.findall(Q + "file")]
+    fail.equal(sorted(listed), ["rom38.hex", "rom5.hex"], "file set rom_images")
+    for name in listed:
+        fail.check(os.path.isfile(os.path.join(rom_dir, name)), f"rom_images: specular_romgen wrote no {name}")
+    for view in TOPS.values():
+        inst = instantiations.get(view)
+        refs = [] if inst is None else [text_of(r, "localName") for r in inst.findall(Q + "fileSetRef")]
+        fail.check("rom_images" in refs, f"{view}: no fileSetRef rom_images")
     fail.check("RTL_TOP" in parameter_of, "no component parameter RTL_TOP")
     # the SystemC headers listed are headers of the package
     headers = file_sets.get("systemc_headers")

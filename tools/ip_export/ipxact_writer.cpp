@@ -1,4 +1,5 @@
 #include "ipxact_writer.h"
+#include "register_roles.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -81,9 +82,10 @@ FieldAccessWords access_words(Access access) {
     case Access::read_only: return {"read-only", ""};
     case Access::read_write: return {"read-write", ""};
     case Access::write_1_to_clear: return {"read-write", "oneToClear"};
-    // A write of 1 acts and the field reads 0: "modify" (the value after a write is
-    // not the value written; the description says how).
-    case Access::self_clearing: return {"read-write", "modify"};
+    // A write of 1 acts and the field reads 0: write-only, as the RDL's `sw = w;
+    // singlepulse` and the tables' W (modifiedWriteValue=modify made PeakRDL-ipxact's
+    // importer refuse the file: "onwrite = wuser" on a field that is not external).
+    case Access::self_clearing: return {"write-only", ""};
   }
   return {"read-only", ""};
 }
@@ -95,20 +97,23 @@ const char* register_access(Reg reg) {
   return "read-only";
 }
 
-void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset) {
+/// `with_reset` false: a memory window's word (BATCH_COS, BATCH_OUT), which no reset
+/// touches: a register model then holds no per-word reset check for its 4 096 words.
+void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset, bool with_reset = true) {
   x.open("field");
   x.leaf("name", f.name);
   x.leaf("description", f.description);
   x.leaf("bitOffset", std::to_string(f.shift));
-  x.open("resets");
-  x.open("reset");
-  x.leaf("value", hex_literal((register_reset & f.mask()) >> f.shift));
-  x.close("reset");
-  x.close("resets");
+  if (with_reset) {
+    x.open("resets");
+    x.open("reset");
+    x.leaf("value", hex_literal((register_reset & f.mask()) >> f.shift));
+    x.close("reset");
+    x.close("resets");
+  }
   x.leaf("bitWidth", std::to_string(f.width));
-  if (f.access == Access::write_1_to_clear || f.access == Access::self_clearing ||
-      f.values == FieldValues::error_cause || f.reg == Reg::status)
-    x.leaf("volatile", "true");  // the device changes it
+  if (is_volatile(f.reg))  // the device changes it (register_roles.h)
+    x.leaf("volatile", "true");
   const FieldAccessWords words = access_words(f.access);
   x.leaf("access", words.access);
   if (f.values != FieldValues::none) {
@@ -183,7 +188,7 @@ void write_memory_map(Xml& x) {
       x.leaf("addressOffset", hex_literal(row.offset));
       x.leaf("size", "32");
       x.leaf("access", register_access(row.reg));
-      for (const FieldInfo& f : fields_of(row.reg)) write_field(x, f, row.reset);
+      for (const FieldInfo& f : fields_of(row.reg)) write_field(x, f, row.reset, false);
       x.close("register");
     }
   }
@@ -214,10 +219,12 @@ const SystemCView systemc_views[] = {
 };
 
 std::string view_of_top(const VerilogModule& top) {
-  return top.name == "specular_device" ? "rtl" : top.name == "specular_device_sync" ? "rtl_sync" : top.name;
+  return top.name == "specular_device" ? "rtl" : top.name == "specular_device_sync" ? "rtl_sync"
+         : top.name == "specular_ip_axi" ? "rtl_axi" : top.name;
 }
 std::string prefix_of_top(const VerilogModule& top) {
-  return top.name == "specular_device" ? "device" : top.name == "specular_device_sync" ? "sync" : top.name;
+  return top.name == "specular_device" ? "device" : top.name == "specular_device_sync" ? "sync"
+         : top.name == "specular_ip_axi" ? "axi" : top.name;
 }
 
 void write_views(Xml& x, const ComponentFacts& facts) {
@@ -282,6 +289,9 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
     x.close("moduleParameters");
     x.open("fileSetRef");
     x.leaf("localName", "verilog_" + view_of_top(top));
+    x.close("fileSetRef");
+    x.open("fileSetRef");
+    x.leaf("localName", "rom_images");
     x.close("fileSetRef");
     x.close("componentInstantiation");
   }
@@ -423,7 +433,71 @@ void write_file_sets(Xml& x, const ComponentFacts& facts) {
     }
     x.close("fileSet");
   }
+  // ROM 5's and ROM 38's contents, which rom5.v and rom38.v read with $readmemh from the
+  // files their IMAGE parameters name (the tops' ROM5_IMAGE, ROM38_IMAGE)
+  x.open("fileSet");
+  x.leaf("name", "rom_images");
+  x.leaf("description",
+         "The ROM images the Verilog tops read with $readmemh (parameters ROM5_IMAGE, "
+         "ROM38_IMAGE), at the default widths, written by specular_romgen from the C++ "
+         "tables and installed beside the Verilog (share/SpecularUnit/rtl/)");
+  for (const char* image : {"rom5.hex", "rom38.hex"}) {
+    x.open("file");
+    x.leaf("name", std::string("../rtl/") + image);
+    x.leaf("fileType", "user", "user=\"verilogReadmemhImage\"");
+    x.close("file");
+  }
+  x.close("fileSet");
   x.close("fileSets");
+}
+
+/// The Verilog view of the whole IP (rtl/ip/specular_ip_axi.v): ARM's AMBA AXI4-Lite bus
+/// definition and RTL abstraction, its signals mapped to the top's ports, the same
+/// memory map (the batch windows are holes there: docs/decisions.md).
+void write_axi_interface(Xml& x, const ComponentFacts& facts) {
+  const VerilogModule* axi = nullptr;
+  for (const VerilogModule& top : facts.tops)
+    if (top.name == "specular_ip_axi") axi = &top;
+  if (axi == nullptr) return;
+  x.open("busInterface");
+  x.leaf("name", "s_axi");
+  x.leaf("description",
+         "AMBA AXI4-Lite slave of specular_ip_axi: 32-bit data, byte strobes, the register "
+         "map 'registers' without the batch windows (docs/rtl_ip.md)");
+  x.empty("busType", "vendor=\"amba.com\" library=\"AMBA4\" name=\"AXI4-Lite\" version=\"r0p0_0\"");
+  x.open("abstractionTypes");
+  x.open("abstractionType");
+  x.leaf("viewRef", view_of_top(*axi));
+  x.empty("abstractionRef",
+          "vendor=\"amba.com\" library=\"AMBA4\" name=\"AXI4-Lite_rtl\" version=\"r0p0_0\"");
+  x.open("portMaps");
+  const std::pair<const char*, const char*> signals[] = {
+      {"ACLK", "aclk"},         {"ARESETn", "aresetn"},
+      {"AWVALID", "s_axi_awvalid"}, {"AWREADY", "s_axi_awready"}, {"AWADDR", "s_axi_awaddr"},
+      {"AWPROT", "s_axi_awprot"},   {"WVALID", "s_axi_wvalid"},   {"WREADY", "s_axi_wready"},
+      {"WDATA", "s_axi_wdata"},     {"WSTRB", "s_axi_wstrb"},     {"BVALID", "s_axi_bvalid"},
+      {"BREADY", "s_axi_bready"},   {"BRESP", "s_axi_bresp"},     {"ARVALID", "s_axi_arvalid"},
+      {"ARREADY", "s_axi_arready"}, {"ARADDR", "s_axi_araddr"},   {"ARPROT", "s_axi_arprot"},
+      {"RVALID", "s_axi_rvalid"},   {"RREADY", "s_axi_rready"},   {"RDATA", "s_axi_rdata"},
+      {"RRESP", "s_axi_rresp"}};
+  for (const auto& [logical, physical] : signals) {
+    x.open("portMap");
+    x.open("logicalPort");
+    x.leaf("name", logical);
+    x.close("logicalPort");
+    x.open("physicalPort");
+    x.leaf("name", physical);
+    x.close("physicalPort");
+    x.close("portMap");
+  }
+  x.close("portMaps");
+  x.close("abstractionType");
+  x.close("abstractionTypes");
+  x.open("slave");
+  x.empty("memoryMapRef", "memoryMapRef=\"registers\"");
+  x.close("slave");
+  x.leaf("bitsInLau", "8");
+  x.close("busInterface");
 }
 
 }  // namespace
@@ -470,6 +544,7 @@ std::string ipxact_component(const ComponentFacts& facts) {
   x.close("slave");
   x.leaf("bitsInLau", "8");
   x.close("busInterface");
+  write_axi_interface(x, facts);
   x.close("busInterfaces");
   write_memory_map(x);
   x.open("model");

@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "register_roles.h"
 #include "specular/tlm/register_fields.h"
 #include "specular/tlm/register_map.h"
 
@@ -49,6 +50,10 @@ std::string register_map_json() {
       field["shift"] = f.shift;
       field["width"] = f.width;
       field["access"] = access_name(f.access);
+      // who writes it besides software (register_roles.h): nothing for the constants
+      const RowRole role = role_of(row.reg);
+      field["hardware_writes"] = role != RowRole::constant && role != RowRole::configured;
+      field["volatile"] = is_volatile(row.reg);
       nlohmann::ordered_json values = nlohmann::ordered_json::array();
       for (const FieldValue& v : field_values(f.values))
         values.push_back({{"value", v.value}, {"name", v.name}});

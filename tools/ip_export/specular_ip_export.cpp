@@ -7,6 +7,7 @@
 //   --ipxact FILE     the IEEE 1685-2014 component (ip/specular_unit.xml)
 //   --systemrdl FILE  the SystemRDL 2.0 addrmap (ip/specular_unit.rdl)
 //   --json FILE       the C++ map as plain JSON, for the tests (no writer's code)
+//   --verilog FILE    the register block in Verilog (rtl/ip/specular_reg_block.v)
 //   --bus-dir DIR     the bus and abstraction definitions of the socket's bus type
 //                     (ip/tlm2_generic_payload.busdef.xml, .absdef.xml)
 //   --source-dir DIR  the source tree: rtl/device/ holds the Verilog tops
@@ -25,6 +26,7 @@
 #include "map_json.h"
 #include "systemrdl_writer.h"
 #include "verilog_header.h"
+#include "verilog_regblock.h"
 
 #ifndef SPECULAR_PACKAGE_VERSION
 #error "SPECULAR_PACKAGE_VERSION: the build passes the package's version"
@@ -34,7 +36,8 @@ namespace {
 
 const char* usage =
     "usage: specular_ip_export --source-dir DIR [--version V] [--libdir D]\n"
-    "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE] [--bus-dir DIR]\n";
+    "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE] [--bus-dir DIR]\n"
+    "                          [--verilog FILE]\n";
 
 bool write(const std::string& path, const std::string& text) {
   if (path == "-") {
@@ -58,7 +61,8 @@ int main(int argc, char** argv) {
   std::map<std::string, std::string> options{{"--version", SPECULAR_PACKAGE_VERSION},
                                              {"--libdir", "lib"}};
   const std::vector<std::string> known{"--source-dir", "--version", "--libdir",
-                                       "--ipxact",     "--systemrdl", "--json", "--bus-dir"};
+                                       "--ipxact",     "--systemrdl", "--json", "--bus-dir",
+                                       "--verilog"};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help") {
@@ -71,20 +75,21 @@ int main(int argc, char** argv) {
       std::cerr << "specular_ip_export: error: "
                 << (is_known ? "'" + arg + "' needs a value" : "unknown option '" + arg + "'")
                 << "; the options are --source-dir, --version, --libdir, --ipxact, --systemrdl, --json, "
-                   "--bus-dir\n"
+                   "--bus-dir, --verilog\n"
                 << usage;
       return 2;
     }
     options[arg] = argv[++i];
   }
   if (!options.count("--ipxact") && !options.count("--systemrdl") && !options.count("--json") &&
-      !options.count("--bus-dir")) {
+      !options.count("--bus-dir") && !options.count("--verilog")) {
     std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl, --json "
-                 "or --bus-dir\n"
+                 "--bus-dir or --verilog\n"
               << usage;
     return 2;
   }
   bool ok = true;
+  if (options.count("--verilog")) ok = write(options["--verilog"], verilog_register_block()) && ok;
   if (options.count("--json")) ok = write(options["--json"], register_map_json()) && ok;
   if (options.count("--bus-dir")) {
     ok = write(options["--bus-dir"] + "/" + bus_definition_file, ipxact_bus_definition()) && ok;
@@ -105,14 +110,17 @@ int main(int argc, char** argv) {
     try {
       // The folders of rtl/sources.cmake: the device's blocks, the primitives, the
       // design-space tops (read too: a module name must be unique across all three).
-      const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space"});
-      for (const char* top : {"specular_device", "specular_device_sync"}) {
+      // and ip/: the whole IP behind its AXI4-Lite slave (docs/rtl_ip.md)
+      const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space",
+                                         rtl + "/ip"});
+      for (const char* top : {"device/specular_device", "device/specular_device_sync",
+                              "ip/specular_ip_axi"}) {
         // The file as the component names it: relative to the source tree.
-        VerilogModule m = read_module_header(rtl + "/device/" + top + ".v");
-        m.file = std::string("rtl/device/") + top + ".v";
+        VerilogModule m = read_module_header(rtl + "/" + top + ".v");
+        m.file = std::string("rtl/") + top + ".v";
         facts.tops.push_back(m);
         std::vector<std::string> names;  // relative to rtl/ (device/adder8.v)
-        for (const std::string& path : file_closure(modules, top))
+        for (const std::string& path : file_closure(modules, m.name))
           names.push_back(path.substr(rtl.size() + 1));
         facts.top_files.push_back(names);
       }

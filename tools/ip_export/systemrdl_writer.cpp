@@ -1,4 +1,5 @@
 #include "systemrdl_writer.h"
+#include "register_roles.h"
 
 #include <cstdio>
 #include <sstream>
@@ -61,8 +62,12 @@ void write_reg(std::ostringstream& s, const std::string& indent, Reg reg, std::u
   s << indent << "reg {\n";
   s << indent << "  name = " << quoted(info(reg).name) << ";\n";
   s << indent << "  desc = " << quoted(description) << ";\n";
+  const RowRole role = role_of(reg);
+  const bool constant = role == RowRole::constant || role == RowRole::configured;
   for (const FieldInfo& f : fields_of(reg)) {
-    s << indent << "  field { desc = " << quoted(f.description) << "; " << access_properties(f.access);
+    // a constant is no hardware input: hw = na (SystemRDL 2.0, 9.4)
+    s << indent << "  field { desc = " << quoted(f.description) << "; "
+      << (constant ? std::string("sw = r; hw = na;") : access_properties(f.access));
     if (f.values != FieldValues::none) s << " encode = " << enum_type(f.values) << ";";
     s << " } " << f.name << "[" << (f.shift + f.width - 1) << ":" << f.shift << "] = "
       << sized(f.width, (reset & f.mask()) >> f.shift) << ";\n";

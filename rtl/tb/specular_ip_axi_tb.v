@@ -1,0 +1,452 @@
+// Self-checking Icarus testbench of the whole IP, specular_ip_axi (docs/rtl_ip.md): an
+// AXI4-Lite master that stalls every channel at random (STALL = 1; SEED) drives
+//   - the reset values of every word of the map (docs/tlm.md's table, written out here);
+//   - the operations of `specular_tb --format csv` (VECTORS: Core's bits), each through
+//     COS, N, R, G, B and START or through the OPERANDS window, waited for by done_irq,
+//     then OUT_R/G/B, REG1, REG9_PASS1 and REG9_PASS2 read and compared;
+//   - misuse: every refusal of the register block (hole DECERR, the batch windows left
+//     out, read-only, byte strobes, sub-word writes to a window, the range checks,
+//     CONTROL's reserved bits) with STATUS.CAUSE and ERROR_ADDRESS, the operands kept,
+//     W1C and sub-word merges;
+//   - a read and a write issued together, and STATUS.BUSY read while an operation runs.
+// The AXI4-Lite rules are checked on every edge (specular_ip_axi_props.v). Stops with
+// $fatal on the first mismatch.
+`default_nettype none
+`timescale 1ns / 1ps
+
+module specular_ip_axi_tb;
+  parameter VECTORS = "vectors.csv";
+  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
+  parameter STALL = 1;
+  parameter SEED = 1;
+  parameter MAX_VECTORS = 4096;
+
+  reg aclk = 1'b0, aresetn = 1'b0;
+  always #5 aclk = ~aclk;
+
+  reg         awvalid = 1'b0, wvalid = 1'b0, bready = 1'b0, arvalid = 1'b0, rready = 1'b0;
+  reg  [31:0] awaddr = 32'd0, wdata = 32'd0, araddr = 32'd0;
+  reg  [3:0]  wstrb = 4'd0;
+  wire        awready, wready, bvalid, arready, rvalid, done_irq;
+  wire [1:0]  bresp, rresp;
+  wire [31:0] rdata;
+
+  specular_ip_axi #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
+    .aclk(aclk), .aresetn(aresetn),
+    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
+    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
+    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
+    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
+    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
+    .done_irq(done_irq));
+
+  specular_ip_axi_props props (
+    .aclk(aclk), .aresetn(aresetn),
+    .awvalid(awvalid), .awready(awready), .awaddr(awaddr),
+    .wvalid(wvalid), .wready(wready), .wdata(wdata), .wstrb(wstrb),
+    .bvalid(bvalid), .bready(bready), .bresp(bresp),
+    .arvalid(arvalid), .arready(arready), .araddr(araddr),
+    .rvalid(rvalid), .rready(rready), .rdata(rdata), .rresp(rresp));
+
+  localparam [1:0] OKAY = 2'b00, SLVERR = 2'b10, DECERR = 2'b11;
+  localparam [31:0] STATUS = 32'h00C, CONTROL = 32'h010, ERROR_ADDRESS = 32'h018;
+  localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;
+  localparam [31:0] OUT_R = 32'h040, REG1 = 32'h050, REG9_PASS1_LO = 32'h054;
+  localparam [31:0] OPERANDS = 32'h080, RESULTS = 32'h0A0;
+
+  integer seed = SEED;
+  // 0..3 cycles of stall when STALL is set
+  function integer stall;
+    input integer dummy;
+    begin
+      stall = STALL ? ({$random(seed)} % 4) : 0;
+    end
+  endfunction
+  task cycles;
+    input integer k;
+    integer i;
+    begin
+      for (i = 0; i < k; i = i + 1) @(posedge aclk);
+      #1;
+    end
+  endtask
+
+  // ---- the master's channels, each with its own stalls ----
+  task send_aw;
+    input [31:0] address;
+    begin
+      cycles(stall(0));
+      awaddr = address;
+      awvalid = 1'b1;
+      @(posedge aclk);
+      while (!awready) @(posedge aclk);
+      #1 awvalid = 1'b0;
+      awaddr = 32'hDEAD_BEEF;
+    end
+  endtask
+  task send_w;
+    input [31:0] data;
+    input [3:0] strobes;
+    begin
+      cycles(stall(0));
+      wdata = data;
+      wstrb = strobes;
+      wvalid = 1'b1;
+      @(posedge aclk);
+      while (!wready) @(posedge aclk);
+      #1 wvalid = 1'b0;
+      wdata = 32'hDEAD_BEEF;
+    end
+  endtask
+  task take_b;
+    output [1:0] response;
+    begin
+      cycles(stall(0));
+      bready = 1'b1;
+      @(posedge aclk);
+      while (!bvalid) @(posedge aclk);
+      response = bresp;
+      #1 bready = 1'b0;
+    end
+  endtask
+  task write_strobed;
+    input [31:0] address;
+    input [31:0] data;
+    input [3:0] strobes;
+    input [1:0] expected;
+    reg [1:0] response;
+    begin
+      fork
+        send_aw(address);
+        send_w(data, strobes);
+        take_b(response);
+      join
+      if (response !== expected)
+        $fatal(1, "MISMATCH write 0x%08h of 0x%08h (strobes %b): response %b, expected %b",
+               address, data, strobes, response, expected);
+    end
+  endtask
+  task write;
+    input [31:0] address;
+    input [31:0] data;
+    input [1:0] expected;
+    begin
+      write_strobed(address, data, 4'b1111, expected);
+    end
+  endtask
+  task read_raw;
+    input [31:0] address;
+    output [31:0] data;
+    output [1:0] response;
+    begin
+      cycles(stall(0));
+      araddr = address;
+      arvalid = 1'b1;
+      @(posedge aclk);
+      while (!arready) @(posedge aclk);
+      #1 arvalid = 1'b0;
+      araddr = 32'hDEAD_BEEF;
+      cycles(stall(0));
+      rready = 1'b1;
+      @(posedge aclk);
+      while (!rvalid) @(posedge aclk);
+      data = rdata;
+      response = rresp;
+      #1 rready = 1'b0;
+    end
+  endtask
+  task expect_read;
+    input [31:0] address;
+    input [31:0] expected;
+    input [1:0] expected_response;
+    reg [31:0] data;
+    reg [1:0] response;
+    begin
+      read_raw(address, data, response);
+      if (response !== expected_response || (response == OKAY && data !== expected))
+        $fatal(1, "MISMATCH read 0x%08h: 0x%08h response %b, expected 0x%08h response %b",
+               address, data, response, expected, expected_response);
+    end
+  endtask
+  // A refusal: STATUS reads error and CAUSE, ERROR_ADDRESS the offset; then cleared.
+  task expect_refusal;
+    input [7:0] cause;
+    input [31:0] address;
+    begin
+      expect_read(STATUS, 32'h4 | ({24'd0, cause} << 8), OKAY);
+      expect_read(ERROR_ADDRESS, address, OKAY);
+      write_strobed(STATUS, 32'h0000_0400, 4'b0010, OKAY);  // a byte of 0x04: no bit of ERROR
+      expect_read(STATUS, 32'h4 | ({24'd0, cause} << 8), OKAY);
+      write(STATUS, 32'h4, OKAY);
+      expect_read(STATUS, 32'h0, OKAY);
+      expect_read(ERROR_ADDRESS, 32'h0, OKAY);
+    end
+  endtask
+
+  // ---- vectors (specular_tb --format csv: Core's bits) ----
+  integer v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1], v_b [0:MAX_VECTORS-1];
+  reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
+             v_out26 [0:MAX_VECTORS-1];
+  reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
+  integer count;
+  task read_vectors;
+    integer fd, fields, n, r, g, b, pass;
+    real cos, skip;
+    reg [63:0] h1, h2, h3, h4, h5, h6;
+    reg [8*2048-1:0] header;
+    begin
+      fd = $fopen(VECTORS, "r");
+      if (fd == 0) $fatal(1, "specular_ip_axi_tb: cannot read %0s", VECTORS);
+      fields = $fgets(header, fd);
+      count = 0;
+      fields = 25;
+      while (!$feof(fd) && fields == 25) begin
+        fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
+                              "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
+                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
+                         skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
+        if (fields == 25) begin
+          if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_tb: more than %0d vectors", MAX_VECTORS);
+          v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
+          v_reg1[count] = h1[31:0];
+          // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
+          v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
+          v_pass2[count] = {{27{h3[36]}}, h3[36:0]};
+          v_out24[count] = h4[31:0]; v_out25[count] = h5[31:0]; v_out26[count] = h6[31:0];
+          count = count + 1;
+        end else if (fields > 0) begin
+          $fatal(1, "specular_ip_axi_tb: %0s line %0d: %0d of 25 fields", VECTORS, count + 2, fields);
+        end
+      end
+      $fclose(fd);
+      if (count == 0) $fatal(1, "specular_ip_axi_tb: no vectors in %0s", VECTORS);
+    end
+  endtask
+
+  // ---- checks ----
+  task check_reset_values;
+    integer k;
+    begin
+      expect_read(32'h000, 32'h00059965, OKAY);  // ID
+      expect_read(32'h004, 32'h00010001, OKAY);  // VERSION
+      expect_read(32'h008, 32'h080D1000, OKAY);  // CONFIG (defaults)
+      expect_read(STATUS, 32'h0, OKAY);
+      expect_read(CONTROL, 32'h0, OKAY);
+      expect_read(32'h014, 32'h0, OKAY);         // BATCH_CAPACITY: no batch window here
+      expect_read(ERROR_ADDRESS, 32'h0, OKAY);
+      expect_read(COS, 32'h0, OKAY);
+      expect_read(N, 32'h1, OKAY);
+      expect_read(R, 32'h0, OKAY);
+      expect_read(G, 32'h0, OKAY);
+      expect_read(B, 32'h0, OKAY);
+      for (k = 0; k < 11; k = k + 1)             // OUT_R .. NORM39 (0x040-0x068, holes DECERR)
+        expect_read(OUT_R + 4 * k, 32'h0, (k == 3 || k == 19) ? DECERR : OKAY);
+      write(STATUS, 32'h4, OKAY);                // the hole at 0x04C was read: clear the record
+      expect_read(32'h068, 32'h0, OKAY);         // NORM39
+      expect_read(32'h06C, 32'h80, OKAY);        // PIN19_H
+      expect_read(32'h070, 32'h00400000, OKAY);  // PIN20_A
+      expect_read(OPERANDS + 4, 32'h1, OKAY);    // N through the window
+      expect_read(OPERANDS + 20, 32'h0, OKAY);   // CONTROL through the window
+      if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq high after reset");
+    end
+  endtask
+
+  task wait_irq;
+    integer k;
+    begin
+      k = 0;
+      while (done_irq !== 1'b1) begin
+        @(posedge aclk);
+        #1 k = k + 1;
+        if (k > 50) $fatal(1, "MISMATCH done_irq did not rise");
+      end
+    end
+  endtask
+
+  task run_vector;
+    input integer i;
+    input integer through_window;
+    begin
+      if (through_window) begin
+        write(OPERANDS + 4, v_n[i], OKAY);
+        write(OPERANDS + 8, v_r[i], OKAY);
+        write(OPERANDS + 12, v_g[i], OKAY);
+        write(OPERANDS + 16, v_b[i], OKAY);
+        write(OPERANDS + 0, v_reg1[i], OKAY);
+        write(OPERANDS + 20, 32'h1, OKAY);
+      end else begin
+        write(N, v_n[i], OKAY);
+        write(R, v_r[i], OKAY);
+        write(G, v_g[i], OKAY);
+        write(B, v_b[i], OKAY);
+        write(COS, v_reg1[i], OKAY);
+        write(CONTROL, 32'h1, OKAY);
+      end
+      wait_irq;
+      expect_read(STATUS, 32'h2, OKAY);
+      expect_read(through_window ? RESULTS : OUT_R, v_out24[i], OKAY);
+      expect_read((through_window ? RESULTS : OUT_R) + 4, v_out25[i], OKAY);
+      expect_read((through_window ? RESULTS : OUT_R) + 8, v_out26[i], OKAY);
+      expect_read(REG1, v_reg1[i], OKAY);
+      expect_read(REG9_PASS1_LO, v_pass1[i][31:0], OKAY);
+      expect_read(REG9_PASS1_LO + 4, v_pass1[i][63:32], OKAY);
+      expect_read(REG9_PASS1_LO + 8, v_pass2[i][31:0], OKAY);
+      expect_read(REG9_PASS1_LO + 12, v_pass2[i][63:32], OKAY);
+      write(STATUS, 32'h2, OKAY);  // W1C: done_irq falls
+      @(posedge aclk);
+      #1 if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq still high after W1C of DONE");
+    end
+  endtask
+
+  task check_misuse;
+    reg [31:0] data;
+    reg [1:0] response;
+    integer k, j;
+    begin
+      write(N, 32'd40, OKAY);
+      write(G, 32'd0, OKAY);
+      write(N, 32'd0, SLVERR);            expect_refusal(8'd2, N);
+      write(N, 32'd1001, SLVERR);         expect_refusal(8'd2, N);
+      write(COS, 32'd65537, SLVERR);      expect_refusal(8'd1, COS);
+      write(COS, 32'd65536, OKAY);
+      write(G, 32'd256, SLVERR);          expect_refusal(8'd3, G);
+      write(OPERANDS + 8, 32'd300, SLVERR); expect_refusal(8'd3, OPERANDS + 8);
+      write(32'h000, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h000);
+      write(RESULTS, 32'd1, SLVERR);      expect_refusal(8'd4, RESULTS);
+      write(ERROR_ADDRESS, 32'd1, SLVERR); expect_refusal(8'd4, ERROR_ADDRESS);
+      write(CONTROL, 32'h2, SLVERR);      expect_refusal(8'd5, CONTROL);
+      write(CONTROL, 32'h21, SLVERR);     expect_refusal(8'd5, CONTROL);
+      write(CONTROL, 32'h8000_0001, SLVERR); expect_refusal(8'd5, CONTROL);
+      // every address bit above the map's: a hole, whichever register its low bits name
+      for (k = 15; k < 32; k = k + 1)
+        for (j = 0; j < 43; j = j + 1) begin   // every word up to RESULTS' last
+          expect_read(32'd1 << k | 4 * j, 32'd0, DECERR); expect_refusal(8'd7, 32'd1 << k | 4 * j);
+        end
+      for (k = 15; k < 32; k = k + 1) begin
+        write(32'd1 << k | 32'h024, 32'd7, DECERR);      expect_refusal(8'd7, 32'd1 << k | 32'h024);
+      end
+      write(32'h01C, 32'd1, DECERR);      expect_refusal(8'd7, 32'h01C);   // a hole
+      expect_read(32'h034, 32'd0, DECERR); expect_refusal(8'd7, 32'h034);
+      write(32'h1000, 32'd5, DECERR);     expect_refusal(8'd7, 32'h1000);  // BATCH_COS: left out
+      expect_read(32'h4000, 32'd0, DECERR); expect_refusal(8'd7, 32'h4000); // BATCH_OUT: left out
+      expect_read(32'h8000, 32'd0, DECERR); expect_refusal(8'd7, 32'h8000);
+      write(32'hFFFF_FFFC, 32'd0, DECERR); expect_refusal(8'd7, 32'hFFFF_FFFC);
+      write_strobed(N, 32'd5, 4'b0101, SLVERR); expect_refusal(8'd9, N);
+      write_strobed(N, 32'd5, 4'b0000, SLVERR); expect_refusal(8'd9, N);
+      write_strobed(N, 32'd5, 4'b0111, SLVERR); expect_refusal(8'd9, N);
+      write_strobed(OPERANDS + 4, 32'd5, 4'b0001, SLVERR); expect_refusal(8'd8, OPERANDS + 4);
+      write_strobed(32'h041, 32'h0000_0100, 4'b0010, SLVERR); expect_refusal(8'd4, 32'h041);
+      // the operands kept their values through every refusal
+      expect_read(N, 32'd40, OKAY);
+      expect_read(COS, 32'd65536, OKAY);
+      expect_read(G, 32'd0, OKAY);
+      // sub-word writes merge into the operand registers, checked as a whole word
+      write_strobed(N + 1, 32'h0000_0300, 4'b0010, OKAY);       // N = 0x328 = 808
+      expect_read(N, 32'd808, OKAY);
+      write_strobed(N + 2, 32'h0001_0000, 4'b1100, SLVERR);     // 0x10328: above 1000
+      expect_refusal(8'd2, N + 2);
+      expect_read(N, 32'd808, OKAY);
+      write_strobed(R, 32'h0000_00FF, 4'b0001, OKAY);
+      write_strobed(R + 1, 32'h0000_0100, 4'b0010, SLVERR);      // 0x1FF
+      expect_refusal(8'd3, R + 1);
+      expect_read(R, 32'd255, OKAY);
+      // a START by a byte write, the DONE flag cleared by a byte write
+      write_strobed(CONTROL, 32'h0000_0001, 4'b0001, OKAY);
+      wait_irq;
+      expect_read(STATUS, 32'h2, OKAY);
+      write(STATUS, 32'h4, OKAY);                // ERROR alone: DONE stays
+      expect_read(STATUS, 32'h2, OKAY);
+      write(STATUS, 32'hFFFF_FFF9, OKAY);        // every bit but DONE and ERROR: nothing
+      expect_read(STATUS, 32'h2, OKAY);
+      write_strobed(STATUS, 32'h0000_0002, 4'b0001, OKAY);
+      expect_read(STATUS, 32'h0, OKAY);
+      if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq high after a byte W1C of DONE");
+      // CONTROL written with 0 starts nothing and is accepted
+      write(CONTROL, 32'h0, OKAY);
+      cycles(8);
+      if (done_irq !== 1'b0) $fatal(1, "MISMATCH CONTROL = 0 started an operation");
+      // A refusal after an error replaces the record (cause, address)
+      write(N, 32'd0, SLVERR);
+      write(B, 32'd999, SLVERR);
+      expect_refusal(8'd3, B);
+      read_raw(STATUS, data, response);
+    end
+  endtask
+
+  // A write and a read issued in the same cycle; STATUS.BUSY seen during an operation.
+  task check_concurrency;
+    reg [31:0] data;
+    integer busy_seen;
+    reg [31:0] out_before [0:2];
+    begin
+      read_raw(OUT_R, out_before[0], data[1:0]);
+      read_raw(OUT_R + 4, out_before[1], data[1:0]);
+      read_raw(OUT_R + 8, out_before[2], data[1:0]);
+      fork
+        write(CONTROL, 32'h1, OKAY);
+        begin
+          // the START's response comes with the results: meanwhile reads are served
+          // (without stalls here, 2 cycles each, so that one falls inside the operation)
+          busy_seen = 0;
+          data = 32'd0;
+          while (data[1] !== 1'b1) begin
+            araddr = STATUS;
+            arvalid = 1'b1;
+            rready = 1'b1;
+            @(posedge aclk);
+            while (!arready) @(posedge aclk);
+            #1 arvalid = 1'b0;
+            @(posedge aclk);
+            while (!rvalid) @(posedge aclk);
+            data = rdata;
+            if (rresp !== OKAY) $fatal(1, "MISMATCH STATUS read refused during an operation");
+            if (data[0] === 1'b1) busy_seen = busy_seen + 1;
+            if (data[0] === 1'b1 && busy_seen == 1) begin  // OUT_* hold the last results meanwhile
+              #1 rready = 1'b0;
+              araddr = OUT_R + 4 * (busy_seen % 3);
+              arvalid = 1'b1;
+              rready = 1'b1;
+              @(posedge aclk);
+              while (!arready) @(posedge aclk);
+              #1 arvalid = 1'b0;
+              @(posedge aclk);
+              while (!rvalid) @(posedge aclk);
+              if (rdata !== out_before[busy_seen % 3])
+                $fatal(1, "MISMATCH OUT word %0d changed during an operation", busy_seen % 3);
+            end
+            #1 rready = 1'b0;
+          end
+          if (busy_seen == 0) $fatal(1, "MISMATCH STATUS.BUSY never read 1 during an operation");
+        end
+      join
+      expect_read(STATUS, 32'h2, OKAY);
+      write(STATUS, 32'h2, OKAY);
+      fork
+        write(R, 32'd17, OKAY);
+        expect_read(N, 32'd808, OKAY);
+      join
+      fork
+        write(G, 32'd18, OKAY);
+        expect_read(32'h01C, 32'd0, DECERR);
+      join
+      expect_refusal(8'd7, 32'h01C);
+      expect_read(G, 32'd18, OKAY);
+    end
+  endtask
+
+  integer i;
+  initial begin
+    read_vectors;
+    cycles(3);
+    aresetn = 1'b1;
+    cycles(1);
+    check_reset_values;
+    for (i = 0; i < count; i = i + 1) run_vector(i, i % 3 == 2);
+    check_misuse;
+    check_concurrency;
+    $display("specular_ip_axi_tb: PASS (%0d operations, STALL %0d)", count, STALL);
+    $finish;
+  end
+endmodule
+
+`default_nettype wire

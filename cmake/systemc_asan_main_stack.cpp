@@ -80,10 +80,7 @@ __attribute__((constructor)) void remember_main_stack() {
   asan_finish_switch = asan_function<FinishSwitch>(SANITIZER_FINISH_SWITCH);
   if (asan_start_switch == nullptr || asan_finish_switch == nullptr) return;
   const char* keep = std::getenv("SPECULAR_ASAN_KEEP_SYSTEMC_STACK");
-  if (keep != nullptr && std::strcmp(keep, "1") == 0) {
-    asan_start_switch = nullptr;  // off: SystemC's calls go to ASan unchanged
-    return;
-  }
+  if (keep != nullptr && std::strcmp(keep, "1") == 0) return;  // off: SystemC's calls unchanged
   void* main_fake_stack = nullptr;
   asan_start_switch(&main_fake_stack, nullptr, 0);
   asan_finish_switch(nullptr, &main_stack_bottom, &main_stack_size);
@@ -104,15 +101,11 @@ __attribute__((constructor)) void remember_main_stack() {
 #if !defined(__clang__)
 extern "C" void __sanitizer_start_switch_fiber(void** fake_stack_save, const void* bottom,
                                                std::size_t size) {
-  if (asan_start_switch == nullptr) {  // no ASan, or switched off: SystemC's call as it is
-    const auto next = asan_function<StartSwitch>(SANITIZER_START_SWITCH);
-    if (next != nullptr) next(fake_stack_save, bottom, size);
-    return;
-  }
-  if (bottom == nullptr && size == 0) {
+  static const StartSwitch asan = asan_function<StartSwitch>(SANITIZER_START_SWITCH);
+  if (bottom == nullptr && size == 0 && main_stack_size != 0) {  // 0 when switched off
     bottom = main_stack_bottom;
     size = main_stack_size;
   }
-  asan_start_switch(fake_stack_save, bottom, size);
+  if (asan != nullptr) asan(fake_stack_save, bottom, size);
 }
 #endif

@@ -43,9 +43,8 @@ def classify(output):
 def junit_failures(path):
     """(name, class) of every failed test case in ctest's JUnit file, and the number run."""
     root = ET.parse(path).getroot()
-    cases = root.iter("testcase")
     failures, total = [], 0
-    for case in cases:
+    for case in root.iter("testcase"):
         total += 1
         failure = case.find("failure")
         status = case.get("status", "")
@@ -84,7 +83,7 @@ def report(failures, total, what):
 
 
 def main(argv):
-    if len(argv) >= 2 and argv[0] == "--junit" and len(argv) == 2:
+    if len(argv) == 2 and argv[0] == "--junit":
         try:
             failures, total = junit_failures(argv[1])
         except (OSError, ET.ParseError) as error:

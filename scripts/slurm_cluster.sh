@@ -68,6 +68,10 @@ start() {
   host=$(hostname)
   ctld_port=$(free_port 6817)
   d_port=$(free_port $((ctld_port + 1)))
+  # SchedulerParameters: the main scheduling loop every second instead of 60 and no batch
+  # delay, so that an array task or a merge job waits about a second for its turn instead
+  # of 2-3 (a farm of short tasks on one node; tests/farm/farm_test.sh with Slurm: 251 s
+  # before, 181 s after, the same loaded machine).
   cat >"$dir/etc/slurm.conf" <<EOF
 # Written by scripts/slurm_cluster.sh: a single-node cluster in $dir.
 ClusterName=specular-farm
@@ -82,6 +86,7 @@ CredType=cred/munge
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
 SchedulerType=sched/backfill
+SchedulerParameters=sched_interval=1,bf_interval=1,batch_sched_delay=0
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 MpiDefault=none

@@ -4,7 +4,7 @@ Debian packages no SystemRDL compiler (and the npm registry has no official one)
 the test reads the file with this: a tokeniser and a recursive-descent parser over
   root      := (enum_def | component_def)*
   enum_def  := 'enum' ID '{' (ID '=' number ['{' assignment* '}'] ';')* '}' ';'
-  component := ('addrmap'|'regfile'|'reg'|'field') [ID] '{' item* '}' [instances] ';'
+  component := ['external'] ('addrmap'|'regfile'|'reg'|'field'|'mem') [ID] '{' item* '}' [instances] ';'
   item      := component | assignment
   assignment:= ['default'] ID ['=' value] ';'
   instances := instance (',' instance)*
@@ -18,7 +18,7 @@ with the line and what it expected. docs/ipxact.md says so.
 from dataclasses import dataclass, field as dc_field
 from typing import Dict, List, Optional, Tuple, Union
 
-KEYWORD_COMPONENTS = ("addrmap", "regfile", "reg", "field")
+KEYWORD_COMPONENTS = ("addrmap", "regfile", "reg", "field", "mem")
 
 
 class RdlError(Exception):
@@ -129,6 +129,7 @@ class Component:
     defaults: Dict[str, Value] = dc_field(default_factory=dict)
     children: List[Tuple["Component", Instance]] = dc_field(default_factory=list)
     line: int = 0
+    external: bool = False  # instantiated `external` (a mem always is, SystemRDL 2.0 §12)
 
 
 @dataclass
@@ -239,14 +240,15 @@ class Parser:
 
     def component(self) -> Tuple[Component, List[Instance]]:
         t = self.peek()
+        external = self.accept("external")
         kind = self.identifier()
         if kind not in KEYWORD_COMPONENTS:
             raise RdlError(f"line {t.line}: expected one of {KEYWORD_COMPONENTS}, found '{kind}'")
         type_name = self.identifier() if self.peek().kind == "id" else None
-        comp = Component(kind, type_name, line=t.line)
+        comp = Component(kind, type_name, line=t.line, external=external)
         self.expect("{")
         while not self.accept("}"):
-            if self.peek().kind == "id" and self.peek().text in KEYWORD_COMPONENTS:
+            if self.peek().kind == "id" and self.peek().text in KEYWORD_COMPONENTS + ("external",):
                 child, instances = self.component()
                 if not instances:
                     raise RdlError(f"line {child.line}: a nested {child.kind} without an instance")

@@ -93,8 +93,12 @@ std::string systemrdl_addrmap(const std::string& version) {
   }
   s << "addrmap specular_unit {\n";
   s << "  name = \"Specular colour intensity device (UA 59965 U), version " << version << "\";\n";
-  s << "  desc = " << quoted("The TLM-2.0 target's registers and windows (docs/tlm.md); map size " +
-                             hex(map_size) + " bytes") << ";\n";
+  // SystemRDL sizes an addrmap by its last child and has no way to state trailing space,
+  // so a compiler elaborates this one to the end of BATCH_OUT; the desc gives the decode.
+  const RegisterInfo& last = register_map.back();
+  s << "  desc = " << quoted("The TLM-2.0 target's registers and windows (docs/tlm.md); the IP decodes " +
+                             hex(map_size) + " bytes, of which the rows span " + hex(last.end()) +
+                             " (above: an address error)") << ";\n";
   s << "  default regwidth = 32;\n";
   s << "  default accesswidth = 32;\n";
   s << "  addressing = regalign;\n\n";
@@ -115,9 +119,15 @@ std::string systemrdl_addrmap(const std::string& version) {
       }
       s << "  } " << row.name << " @ " << hex(row.offset) << ";\n";
     } else {
-      write_reg(s, "  ", row.reg, row.reset, row.description,
-                std::string(row.name) + "[" + std::to_string(row.words) + "] @ " + hex(row.offset) +
-                    " += 0x4");
+      // A batch window: an external memory of 32-bit words (SystemRDL 2.0 §12), so that a
+      // register model holds one memory, not a register per word each with a reset.
+      s << "  external mem {\n";
+      s << "    name = " << quoted(row.name) << ";\n";
+      s << "    desc = " << quoted(row.description) << ";\n";
+      s << "    mementries = " << row.words << ";\n";
+      s << "    memwidth = 32;\n";
+      s << "    sw = " << (row.access == Access::read_only ? "r" : "rw") << ";\n";
+      s << "  } " << row.name << " @ " << hex(row.offset) << ";\n";
     }
     s << "\n";
   }

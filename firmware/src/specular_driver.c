@@ -52,6 +52,7 @@ int specular_init(specular_dev* dev, uintptr_t base, const specular_bus* bus) {
   dev->bad_index = 0u;
   dev->cos_max = 0u;
   dev->rgb_max = 0u;
+  dev->batch_capacity = 0u;
 
   if (reg_read(dev, SPECULAR_ID_OFFSET) != SPECULAR_DEVICE_ID) return SPECULAR_ERR_NOT_SPECULAR;
   if ((reg_read(dev, SPECULAR_VERSION_OFFSET) >> 16) != SPECULAR_MAP_VERSION_MAJOR)
@@ -63,6 +64,10 @@ int specular_init(specular_dev* dev, uintptr_t base, const specular_bus* bus) {
   if (cos_frac > 30u || rgb_bits < 1u || rgb_bits > 31u) return SPECULAR_ERR_VERSION;
   dev->cos_max = (uint32_t)1u << cos_frac;
   dev->rgb_max = ((uint32_t)1u << rgb_bits) - 1u;
+  /* The batch windows as this view of the IP has them: 0 where they are left out (the
+   * Verilog IP, docs/rtl_ip.md); more than the map's windows hold is another map. */
+  dev->batch_capacity = reg_read(dev, SPECULAR_BATCH_CAPACITY_OFFSET);
+  if (dev->batch_capacity > SPECULAR_BATCH_CAPACITY) return SPECULAR_ERR_VERSION;
   /* A clean start: no result pending, no refusal left over. */
   reg_write(dev, SPECULAR_STATUS_OFFSET, SPECULAR_STATUS_DONE_MASK | SPECULAR_STATUS_ERROR_MASK);
   return SPECULAR_OK;
@@ -180,7 +185,7 @@ int specular_compute(specular_dev* dev, const specular_operands* in, specular_re
 
 /* ---- many pixels: the batch windows ------------------------------------------------ */
 
-/* One chunk of k <= SPECULAR_BATCH_CAPACITY operations from BATCH_COS word 0. */
+/* One chunk of k <= dev->batch_capacity operations from BATCH_COS word 0. */
 static int shade_chunk(specular_dev* dev, const uint32_t* cos, size_t k, int32_t* out) {
   size_t i;
   int status;
@@ -216,10 +221,28 @@ static int shade_chunk(specular_dev* dev, const uint32_t* cos, size_t k, int32_t
   return SPECULAR_OK;
 }
 
+/* Without batch windows (BATCH_CAPACITY 0): one operation per pixel through COS and
+ * START, as specular_compute() runs it. */
+static int shade_one_by_one(specular_dev* dev, const uint32_t* cos, size_t count, int32_t* out) {
+  size_t i;
+  int status;
+  for (i = 0; i < count; ++i) {
+    (void)specular_start(dev, cos[i]);
+    status = specular_wait(dev);
+    if (status != SPECULAR_OK) return status;
+    out[3u * i] = signed_word(reg_read(dev, SPECULAR_OUT_R_OFFSET));
+    out[3u * i + 1u] = signed_word(reg_read(dev, SPECULAR_OUT_G_OFFSET));
+    out[3u * i + 2u] = signed_word(reg_read(dev, SPECULAR_OUT_B_OFFSET));
+    specular_ack(dev);
+  }
+  return SPECULAR_OK;
+}
+
 int specular_shade(specular_dev* dev, uint32_t n, const uint32_t rgb[3], const uint32_t* cos,
                    size_t count, int32_t* out) {
   size_t i;
   int status;
+  size_t capacity;
   if (dev == NULL || rgb == NULL || cos == NULL || out == NULL) return SPECULAR_ERR_NULL;
   if (count == 0u) return SPECULAR_ERR_COUNT;
   status = check_shared(dev, n, rgb);
@@ -230,8 +253,10 @@ int specular_shade(specular_dev* dev, uint32_t n, const uint32_t rgb[3], const u
       return SPECULAR_ERR_COS;
     }
   (void)specular_set_shared(dev, n, rgb);
-  for (i = 0; i < count; i += SPECULAR_BATCH_CAPACITY) {
-    const size_t k = count - i < SPECULAR_BATCH_CAPACITY ? count - i : SPECULAR_BATCH_CAPACITY;
+  capacity = dev->batch_capacity;
+  if (capacity == 0u) return shade_one_by_one(dev, cos, count, out);
+  for (i = 0; i < count; i += capacity) {
+    const size_t k = count - i < capacity ? count - i : capacity;
     status = shade_chunk(dev, cos + i, k, out + SPECULAR_BATCH_OUT_WORDS_PER_OPERATION * i);
     if (status != SPECULAR_OK) return status;
   }

@@ -5,7 +5,7 @@
  * operands in, START, wait (polling STATUS.DONE, or an interrupt hook), pins 24-26
  * (OUT_R, OUT_G, OUT_B) and register 9 (REG9_PASS1, REG9_PASS2) out, acknowledge.
  * Many pixels per call: specular_shade() through the BATCH_COS and BATCH_OUT windows, in
- * chunks of SPECULAR_BATCH_CAPACITY. Every argument is checked before anything is
+ * chunks of the BATCH_CAPACITY the IP reports (one by one where it has no windows). Every argument is checked before anything is
  * written; a bad one returns an error code naming it (never clamped). An access the IP
  * refused (STATUS.ERROR) returns SPECULAR_ERR_REFUSED with its cause.
  *
@@ -86,6 +86,7 @@ typedef struct specular_dev {
   uint32_t poll_limit;      /**< STATUS reads (or idle calls) before SPECULAR_ERR_TIMEOUT; 0 = no limit */
   uint32_t cos_max;         /**< from CONFIG at init: 1 << COS_FRAC_BITS */
   uint32_t rgb_max;         /**< from CONFIG at init: (1 << RGB_BITS) - 1 */
+  uint32_t batch_capacity;  /**< BATCH_CAPACITY at init: operations per batch chunk; 0 = no windows */
   volatile uint32_t irq_pending; /**< set by the interrupt hook, cleared before each start */
   uint32_t cause;           /**< SPECULAR_STATUS_CAUSE_* of the last refusal (SPECULAR_ERR_REFUSED) */
   uint32_t error_address;   /**< ERROR_ADDRESS of the last refusal */
@@ -108,8 +109,9 @@ typedef struct specular_result {
 } specular_result;
 
 /** Binds `dev` to the IP at `base` (bus NULL: volatile accesses; otherwise copied), reads
- * ID, VERSION and CONFIG (the ranges of COS and R, G, B), clears STATUS. Polling by
- * default, poll_limit 1000000. Errors: NULL, NOT_SPECULAR, VERSION. */
+ * ID, VERSION, CONFIG (the ranges of COS and R, G, B) and BATCH_CAPACITY (0 where the
+ * view has no batch windows), clears STATUS. Polling by default, poll_limit 1000000.
+ * Errors: NULL, NOT_SPECULAR, VERSION (also a BATCH_CAPACITY above SPECULAR_BATCH_CAPACITY). */
 int specular_init(specular_dev* dev, uintptr_t base, const specular_bus* bus);
 
 /** Raw register access (offsets: SPECULAR_*_OFFSET), for what the calls below do not cover. */
@@ -136,8 +138,9 @@ void specular_ack(specular_dev* dev);
 int specular_compute(specular_dev* dev, const specular_operands* in, specular_result* result);
 
 /** `count` pixels sharing n and R, G, B: cos[i] -> out[3i], out[3i+1], out[3i+2] (pins
- * 24-26), through BATCH_COS and BATCH_OUT in chunks of SPECULAR_BATCH_CAPACITY, each
- * chunk waited for and acknowledged. Every cos is checked before anything is written
+ * 24-26), through BATCH_COS and BATCH_OUT in chunks of dev->batch_capacity (read at
+ * init), each chunk waited for and acknowledged; with capacity 0 (no windows) one
+ * operation per pixel through COS and START. Every cos is checked before anything is written
  * (dev->bad_index names the first bad one). Errors: NULL, COUNT, N, RGB, COS, REFUSED,
  * TIMEOUT. */
 int specular_shade(specular_dev* dev, uint32_t n, const uint32_t rgb[3], const uint32_t* cos,

@@ -397,7 +397,10 @@ step_done lvs
 
 # ---- post-layout STA (OpenSTA with the SPEF) ---------------------------------------
 sta_note=""
-constraints="$here/silicon/$top/constraints.tcl"
+top_dir="$here/silicon/$top"
+# a design variant without a folder of its own takes the generic one, as silicon.sh does
+[[ -d "$top_dir" || "$top" != specular_* || ! -f "$root/rtl/design_space/$top.v" ]] || top_dir="$here/silicon/variant"
+constraints="$top_dir/constraints.tcl"
 if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
   mkdir -p "$out/sta"
   {
@@ -405,7 +408,7 @@ if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
     echo "set rom_lib {${rom_lib:-}}"
     echo "set netlist {$proj/$top.rtlnopwr.v}"
     echo "set top {$top}"
-    echo "set top_dir {$here/silicon/$top}"
+    echo "set top_dir {$top_dir}"
     echo "set out {$out/sta}"
     echo "set spef {$proj/$top.spef}"
     echo "source {$here/silicon/sta.tcl}"

@@ -192,6 +192,8 @@ if [[ $resume -eq 1 ]]; then
   route_started=$(stat -c %Y "$proj/$top.cfg")   # written as the routing started, if it did
   grep '^read_lef .*/source/macros/' "$proj/$top.cfg" | grep -qv "^read_lef $proj/" && \
   sed -i "s|^read_lef .*/source/macros/\([^/]*\.lef\)\$|read_lef $proj/source/macros/\1|" "$proj/$top.cfg"
+  # and the cells' SPICE the LVS netlist includes (blif2BSpice writes its absolute path)
+  [[ ! -f "$proj/$top.spc" ]] || sed -i "1,5s|^\.include .*/cells\.sp\$|.include $spice|" "$proj/$top.spc"
   if route_done; then
     routed_before=1
     echo "layout.sh: --resume: $proj holds a finished routing (${top}_route.def): on to DRC"

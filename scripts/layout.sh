@@ -302,8 +302,9 @@ else
     > "$proj/log/routing_before_resume.txt"
   if [[ -f "$proj/${top}_route.rc" ]]; then
     # qrouter run by hand: what router.sh does after it. The fill cells placement added
-    # (fillcells.txt) go into the Verilog and SPICE netlists (annotate.tcl), or LVS
-    # would find them in the layout alone; the R and C file takes router.sh's name.
+    # (fillcells.txt) go into the Verilog and SPICE netlists (annotate.tcl), so that they
+    # list every instance of the layout (netgen matched the control unit without them
+    # too: fill cells have no signal pin); the R and C file takes router.sh's name.
     cp "$proj/fillcells.txt" "$proj/antenna.out" 2>/dev/null || : > "$proj/antenna.out"
     if [[ -s "$proj/antenna.out" ]]; then
       "$QFLOW_SCRIPTS/annotate.tcl" "$proj/antenna.out" "$proj/$top.rtlnopwr.v" "$proj/$top.spc" \

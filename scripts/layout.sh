@@ -428,7 +428,9 @@ if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
     rm -rf "$out/postlayout"
     mkdir -p "$out/postlayout"
     cp -r "$netlist_dir"/. "$out/postlayout/"
-    cp "$proj/$top.rtlnopwr.v" "$out/postlayout/mapped.v"
+    # blif2Verilog's macro bus pins (.A[0](n)) as Verilog Icarus reads (.A({..., n}))
+    /usr/bin/python3 "$here/silicon/verilog_bus_pins.py" "$proj/$top.rtlnopwr.v" "$out/postlayout/mapped.v" \
+      || { echo "layout.sh: verilog_bus_pins.py failed" >&2; exit 1; }
     cp "$out/sta/device.sdf" "$out/postlayout/device.sdf"
     cp "$out/sta/sta_summary.txt" "$out/postlayout/sta_summary.txt"
     cp "$out/wire_cap.txt" "$out/postlayout/wire_cap.txt"   # energy.sh weighs each net's wire

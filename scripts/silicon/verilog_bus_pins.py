@@ -6,7 +6,8 @@
 blif2Verilog connects a macro's bus pins bit by bit, `.A[0](n0), .A[1](n1)`, which is no
 Verilog (Icarus: "Syntax error in instance port expression"). Each such pin becomes one
 connection of its bits, highest first: `.A({n1, n0})`. A bus whose bits are not all
-there (0..max) is refused (exit 1), naming the instance and pin.
+there (0..max) is refused (exit 1), naming the instance and pin. The fill cells router.sh's
+annotation added (FILL, no pin, no Liberty entry: energy.py refused them) are left out.
 """
 import re
 import sys
@@ -39,7 +40,7 @@ def main():
         sys.stderr.write("usage: verilog_bus_pins.py IN_V OUT_V\n")
         return 2
     text = open(sys.argv[1]).read()
-    out = [fix(l) for l in text.split(";")]
+    out = [fix(l) for l in text.split(";") if not re.match(r"\s*FILL\s", l)]
     open(sys.argv[2], "w").write(";".join(out))
     return 0
 

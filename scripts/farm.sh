@@ -4,6 +4,8 @@
 #   scripts/farm.sh submit REGRESSION [options]   REGRESSION: smoke (minutes), full, coverage
 #                                                 or mutants (issue 37, docs/testing.md)
 #                                                 (coverage: gcov and the RTL's Verilator coverage)
+#                                                 or layout (issue 48: every design laid out,
+#                                                 hours each: give --time, docs/silicon.md)
 #   scripts/farm.sh wait DIR                      wait for a Slurm submission's merge
 #   scripts/farm.sh resubmit DIR [options]        run again only the tasks that failed
 #   scripts/farm.sh task DIR ID                   one task (what each array task runs)
@@ -136,7 +138,16 @@ regression_tasks() {
       emit_group rtl_mutants_specular_device_sync rtl_mutants 8 --target specular_device_sync --count 200 --seed 1
       emit_group rtl_mutants_control_unit16 rtl_mutants 2 --target control_unit16 --count 100 --seed 1
       emit_group cpp_mutants cpp_mutants 40 --copy @WORK@ ;;
-    *) die "unknown regression '$1' (allowed: smoke, full, coverage, mutants)" ;;
+    layout)  # issue 48: one task per design, the two device tops and every variant:
+      # layout.sh (silicon.sh --no-gatesim, placement, routing, DRC, LVS, SPEF, STA), then
+      # energy.sh with the wires (scripts/variant_job.py layout)
+      local name lister
+      lister=$(tool_of "$build" variant_error)
+      [[ -x $lister ]] || die "no $lister (build target specular_variant_error)"
+      for name in device device_sync $("$lister" --list); do
+        emit_group "layout_$name" variant_job 1 layout "$name"
+      done ;;
+    *) die "unknown regression '$1' (allowed: smoke, full, coverage, mutants, layout)" ;;
   esac
 }
 
@@ -374,7 +385,7 @@ case "$command" in
   submit)
     (($# >= 2)) || die "usage: farm.sh submit REGRESSION [options]"
     regression=$2
-    [[ $regression =~ ^(smoke|full|coverage|mutants)$ ]] || die "unknown regression '$regression' (allowed: smoke, full, coverage, mutants)"
+    [[ $regression =~ ^(smoke|full|coverage|mutants|layout)$ ]] || die "unknown regression '$regression' (allowed: smoke, full, coverage, mutants, layout)"
     shift 2
     parse_options "$@"
     [[ -x $(tool_of "$build" tb) && -x $(tool_of "$build" prove) ]] ||

@@ -23,9 +23,13 @@
 #                      below the 0.3 um minimum width, painted beside the cells), lvs (one
 #                      pin of one instance of the mapped netlist left open after layout),
 #                      unrouted (every metal obstructed before routing)
-#   --resume           keep OUT_DIR/qflow and go on after its placement (a long run whose
-#                      placement.sh finished on its own: graywolf takes tens of minutes on
-#                      the whole device)
+#   --resume           keep OUT_DIR/qflow and go on after its last finished step: after
+#                      its placement (graywolf takes tens of minutes on the whole device),
+#                      or, when a routed DEF, its R and C and a route log newer than the
+#                      placed DEF are there (qflow/TOP_route.def and TOP_route.rc or TOP.rc,
+#                      qflow/log/route.log: a qrouter run by hand leaves its log there), straight
+#                      to DRC, LVS, extraction, STA and the picture; times.txt then gives
+#                      routing_before_resume_s (TOP.cfg written to TOP_route.def written)
 #   --no-sta           skip post-layout STA (a top without scripts/silicon/TOP/constraints.tcl
 #                      skips it with a note)
 #
@@ -58,6 +62,7 @@ rom_dir=""
 utilisation=0.6
 sta=1
 resume=0
+routed_before=0
 plant=""
 args=()
 while [[ $# -gt 0 ]]; do
@@ -149,15 +154,54 @@ netlist_files() {  # the full netlist (macros included) as Verilog and SPICE, as
   "$qb/blif2Verilog" -c -p -b -n -v vdd -g gnd "${top}_full.blif" > "$top.rtlbb.v"
   "$qb/blif2BSpice" -i -p vdd -g gnd -l "$spice" "${top}_full.blif" > "$top.spc"
 }
+write_qflow_vars() {  # qflow's variables of the project, where it is now (a resumed copy may have moved)
+  cat > "$proj/qflow_vars.sh" <<EOF
+#!/usr/bin/tcsh -f
+# qflow variables of scripts/layout.sh's project (as qflow itself writes them)
+set projectpath=$proj
+set techdir=$OSU018
+set sourcedir=$proj/source
+set synthdir=$proj
+set layoutdir=$proj
+set techname=osu018
+set scriptdir=$QFLOW_SCRIPTS
+set bindir=/usr/lib/qflow/bin
+set logdir=$proj/log
+EOF
+}
+# A routing that finished before this run (--resume): qrouter's DEF, R and C and log,
+# all newer than the placed and floorplanned DEF it routed. qrouter run by hand
+# (qrouter -s TOP.cfg, its standard_route) leaves TOP_route.def and TOP_route.rc; qflow's
+# router.sh moves them to TOP.def and TOP.rc (and this script copies TOP_route.def back).
+route_done() {
+  local placed="${top}_unroute.def" rc="${top}.rc"
+  [[ -f "$placed" ]] || placed="${top}_placed.def"
+  [[ ! -f "${top}_route.rc" ]] || rc="${top}_route.rc"
+  [[ -f "$placed" && -f "${top}_route.def" && -f "$rc" && -f log/route.log ]] || return 1
+  [[ "${top}_route.def" -nt "$placed" && "$rc" -nt "$placed" && log/route.log -nt "$placed" ]] || return 1
+  grep -q '^\*\*\* Writing DEF file' log/route.log
+}
 cd "$proj"
 if [[ $resume -eq 1 ]]; then
   [[ -f "$proj/${top}_full.blif" && -f "$proj/$top.def" ]] \
     || { echo "layout.sh: --resume: no placed project in $proj" >&2; exit 1; }
   ! compgen -G "$proj/source/macros/*.lef" >/dev/null || macros_lef="$proj/source/macros/rom_macros.lef"
-  # placement.sh's DEF as it left it (kept at the first pass), whatever came after
-  [[ -f "$proj/${top}_placed.def" ]] || cp "$proj/$top.def" "$proj/${top}_placed.def"
-  cp "$proj/${top}_placed.def" "$proj/$top.def"
   grep -q '^read_def' "$proj/$top.cfg" || { echo "layout.sh: --resume: placement.sh wrote no $top.cfg" >&2; exit 1; }
+  write_qflow_vars
+  # the macros' LEF where the project is now (the router's script names them by path)
+  route_started=$(stat -c %Y "$proj/$top.cfg")   # written as the routing started, if it did
+  grep '^read_lef .*/source/macros/' "$proj/$top.cfg" | grep -qv "^read_lef $proj/" && \
+  sed -i "s|^read_lef .*/source/macros/\([^/]*\.lef\)\$|read_lef $proj/source/macros/\1|" "$proj/$top.cfg"
+  # and the cells' SPICE the LVS netlist includes (blif2BSpice writes its absolute path)
+  [[ ! -f "$proj/$top.spc" ]] || sed -i "1,5s|^\.include .*/cells\.sp\$|.include $spice|" "$proj/$top.spc"
+  if route_done; then
+    routed_before=1
+    echo "layout.sh: --resume: $proj holds a finished routing (${top}_route.def): on to DRC"
+  else
+    # placement.sh's DEF as it left it (kept at the first pass), whatever came after
+    [[ -f "$proj/${top}_placed.def" ]] || cp "$proj/$top.def" "$proj/${top}_placed.def"
+    cp "$proj/${top}_placed.def" "$proj/$top.def"
+  fi
 else
 # ---- the netlist as qflow's synthesis would leave it: flat BLIF, Verilog, SPICE ------
 # Flattened (instance names keep their block: mul6._123_), constants as BUFX2 from
@@ -204,19 +248,7 @@ fi
 mv "$top.blif" "${top}_full.blif"
 awk '!($1 == ".gate" && $2 ~ /^ROM/)' "${top}_full.blif" > "$top.blif"
 netlist_files
-cat > "$proj/qflow_vars.sh" <<EOF
-#!/usr/bin/tcsh -f
-# qflow variables of scripts/layout.sh's project (as qflow itself writes them)
-set projectpath=$proj
-set techdir=$OSU018
-set sourcedir=$proj/source
-set synthdir=$proj
-set layoutdir=$proj
-set techname=osu018
-set scriptdir=$QFLOW_SCRIPTS
-set bindir=/usr/lib/qflow/bin
-set logdir=$proj/log
-EOF
+write_qflow_vars
 {
   echo "# scripts/layout.sh: the standard cells padded to this density by qflow's decongest"
   echo "set initial_density = $utilisation"
@@ -240,7 +272,7 @@ fi
 
 # the floorplan: the ROM macros in a row below the core, pins facing it, on the routing
 # grid; the netlist files again from the full BLIF (placement rewrote them without macros)
-if [[ -n "$macros_lef" ]]; then
+if [[ -n "$macros_lef" && $routed_before -eq 0 ]]; then
   /usr/bin/python3 "$here/silicon/layout_floorplan.py" "$proj/$top.def" "$proj/$top.cfg" \
     "$proj/${top}_full.blif" "$MACRO_GAP_UM" "$proj"/source/macros/*.lef | tee "$out/floorplan.txt" \
     || { echo "layout.sh: layout_floorplan.py failed" >&2; exit 1; }
@@ -248,7 +280,7 @@ if [[ -n "$macros_lef" ]]; then
   netlist_files
 fi
 
-if [[ "$plant" == unrouted ]]; then   # every metal obstructed: no net can be routed
+if [[ "$plant" == unrouted && $routed_before -eq 0 ]]; then   # every metal obstructed: no net can be routed
   obstructions=$(for m in 1 2 3 4 5 6; do echo "obstruction -1000 -1000 100000 100000 metal$m"; done)
   awk -v o="$obstructions" '/^read_def/ {print o} {print}' "$proj/$top.cfg" > "$proj/$top.cfg.planted"
   mv "$proj/$top.cfg.planted" "$proj/$top.cfg"
@@ -257,12 +289,36 @@ fi
 # ---- routing (qrouter), wire R and C (rc2dly: SPEF, SDF) ---------------------------
 # router.sh leaves the routed DEF as TOP.def (the placed one is TOP_unroute.def) and the
 # routes' R and C as TOP.rc; rc2dly (qflow) turns those into SPEF for OpenSTA.
-tcsh -f "$QFLOW_SCRIPTS/router.sh" "$proj" "$top" > "$proj/log/route_run.log" 2>&1 || true
-if ! grep -q '^\*\*\* Writing DEF file' "$proj/log/route.log" 2>/dev/null || [[ ! -f "$proj/$top.rc" ]]; then
-  echo "layout.sh: routing failed (qrouter wrote no DEF); see $proj/log/route.log" >&2
-  exit 1
+if [[ $routed_before -eq 0 ]]; then
+  tcsh -f "$QFLOW_SCRIPTS/router.sh" "$proj" "$top" > "$proj/log/route_run.log" 2>&1 || true
+  if ! grep -q '^\*\*\* Writing DEF file' "$proj/log/route.log" 2>/dev/null || [[ ! -f "$proj/$top.rc" ]]; then
+    echo "layout.sh: routing failed (qrouter wrote no DEF); see $proj/log/route.log" >&2
+    exit 1
+  fi
+  cp "$proj/$top.def" "$proj/${top}_route.def"
+else
+  # the routing's wall time: from its script (TOP.cfg, written as it started) to its DEF
+  echo "routing_before_resume_s $(( $(stat -c %Y "$proj/${top}_route.def") - route_started ))" \
+    > "$proj/log/routing_before_resume.txt"
+  if [[ -f "$proj/${top}_route.rc" ]]; then
+    # qrouter run by hand: what router.sh does after it. The fill cells placement added
+    # (fillcells.txt) go into the Verilog and SPICE netlists (annotate.tcl), so that they
+    # list every instance of the layout (netgen matched the control unit without them
+    # too: fill cells have no signal pin); the R and C file takes router.sh's name.
+    cp "$proj/fillcells.txt" "$proj/antenna.out" 2>/dev/null || : > "$proj/antenna.out"
+    if [[ -s "$proj/antenna.out" ]]; then
+      "$QFLOW_SCRIPTS/annotate.tcl" "$proj/antenna.out" "$proj/$top.rtlnopwr.v" "$proj/$top.spc" \
+        "$proj/$top.rtlnopwr.anno.v" "$proj/$top.anno.spc" "$OSU018/osu018_stdcells.sp" \
+        "$proj/${top}_powerground" > "$proj/log/annotate.log" 2>&1 \
+        || { echo "layout.sh: annotate.tcl failed; see $proj/log/annotate.log" >&2; exit 1; }
+      for f in rtlnopwr rtl rtlbb; do
+        [[ ! -f "$proj/$top.$f.anno.v" ]] || mv "$proj/$top.$f.anno.v" "$proj/$top.$f.v"
+      done
+      [[ ! -f "$proj/$top.anno.spc" ]] || mv "$proj/$top.anno.spc" "$proj/$top.spc"
+    fi
+    mv "$proj/${top}_route.rc" "$proj/$top.rc"
+  fi
 fi
-cp "$proj/$top.def" "$proj/${top}_route.def"
 /usr/lib/qflow/bin/rc2dly -D : -r "$proj/$top.rc" -l "$lib" -d "$proj/${top}_rc2dly.spef" > "$proj/log/rc2dly.log" 2>&1 \
   || { echo "layout.sh: rc2dly failed; see $proj/log/rc2dly.log" >&2; exit 1; }
 # its node names and net spellings as OpenSTA reads them (silicon/spef_fix.py says which)
@@ -344,7 +400,10 @@ step_done lvs
 
 # ---- post-layout STA (OpenSTA with the SPEF) ---------------------------------------
 sta_note=""
-constraints="$here/silicon/$top/constraints.tcl"
+top_dir="$here/silicon/$top"
+# a design variant without a folder of its own takes the generic one, as silicon.sh does
+[[ -d "$top_dir" || "$top" != specular_* || ! -f "$root/rtl/design_space/$top.v" ]] || top_dir="$here/silicon/variant"
+constraints="$top_dir/constraints.tcl"
 if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
   mkdir -p "$out/sta"
   {
@@ -352,7 +411,7 @@ if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
     echo "set rom_lib {${rom_lib:-}}"
     echo "set netlist {$proj/$top.rtlnopwr.v}"
     echo "set top {$top}"
-    echo "set top_dir {$here/silicon/$top}"
+    echo "set top_dir {$top_dir}"
     echo "set out {$out/sta}"
     echo "set spef {$proj/$top.spef}"
     echo "source {$here/silicon/sta.tcl}"
@@ -369,7 +428,9 @@ if [[ $sta -eq 1 && -f "$constraints" && -f "$proj/$top.spef" ]]; then
     rm -rf "$out/postlayout"
     mkdir -p "$out/postlayout"
     cp -r "$netlist_dir"/. "$out/postlayout/"
-    cp "$proj/$top.rtlnopwr.v" "$out/postlayout/mapped.v"
+    # blif2Verilog's macro bus pins (.A[0](n)) as Verilog Icarus reads (.A({..., n}))
+    /usr/bin/python3 "$here/silicon/verilog_bus_pins.py" "$proj/$top.rtlnopwr.v" "$out/postlayout/mapped.v" \
+      || { echo "layout.sh: verilog_bus_pins.py failed" >&2; exit 1; }
     cp "$out/sta/device.sdf" "$out/postlayout/device.sdf"
     cp "$out/sta/sta_summary.txt" "$out/postlayout/sta_summary.txt"
     cp "$out/wire_cap.txt" "$out/postlayout/wire_cap.txt"   # energy.sh weighs each net's wire
@@ -381,6 +442,7 @@ fi
 
 # ---- the summary ---------------------------------------------------------------------
 {
+  [[ $routed_before -eq 0 ]] || cat "$proj/log/routing_before_resume.txt"
   for i in "${!step_names[@]}"; do echo "${step_names[$i]}_s ${step_times[$i]}"; done
 } > "$out/times.txt"
 /usr/bin/python3 "$here/silicon/layout_report.py" "$out" "$top" "$utilisation" "$unrouted" \

@@ -14,6 +14,12 @@
       scripts/energy.sh --top specular_NAME into energy/NAME beside the partials' folder
       (the run's folder): the mapping, the SDF and zero-delay replays, the energy per
       result (issue 36); NAME may also be device or device_sync (the two device tops)
+  specular_variant_job layout NAME --shard 0/1 --partial FILE
+      the design after layout (issue 48): scripts/layout.sh --top specular_NAME (its own
+      silicon.sh --no-gatesim, then placement, routing, DRC, LVS, SPEF, post-layout STA)
+      into layout/NAME beside the partials' folder, then scripts/energy.sh on its
+      postlayout/ (each net weighed by its pins and its routed wire) into layout/NAME/energy;
+      NAME may be device or device_sync. Hours per design (docs/silicon.md, "Layout")
   specular_variant_job --merge FILE...
       one complete set (same job, every shard 0..N-1 once), every shard passed: exit 0
 
@@ -29,7 +35,7 @@ import sys
 import time
 
 KIND = "specular_variant_job partial result"
-JOBS = ("rtl", "rtl-quick", "silicon", "energy")
+JOBS = ("rtl", "rtl-quick", "silicon", "energy", "layout")
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -78,6 +84,10 @@ def run_job(build, job, name, shard, partial):
         if result.returncode == 0 and os.path.exists(figures):
             with open(figures) as f:
                 summary["energy"] = json.load(f)
+    elif job == "layout":
+        if count != 1:
+            die("layout is one task: --shard 0/1")
+        summary = run_layout(build, name, partial)
     else:
         if count != 1:
             die("silicon is one task: --shard 0/1")
@@ -99,6 +109,41 @@ def run_job(build, job, name, shard, partial):
         f.write("\n")
     os.replace(partial + ".tmp", partial)
     return 0 if summary["exit"] == 0 else 1
+
+
+def run_layout(build, name, partial):
+    """layout.sh, then energy.sh on its post-layout netlist: the summary of both."""
+    out = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(partial))), "layout", name)
+    rom = os.path.join(build, "rtl", "rom", "default")
+    steps = {}
+    started = time.time()
+    layout = subprocess.run(["bash", os.path.join(ROOT, "scripts", "layout.sh"), "--top", "specular_" + name,
+                             "--rom-dir", rom, out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    sys.stdout.write(layout.stdout)
+    steps["layout_wall_seconds"] = round(time.time() - started, 1)
+    summary = {"exit": layout.returncode, "passed_tests": 0, "out": out, "steps": steps}
+    figures = os.path.join(out, "layout_summary.json")
+    if os.path.exists(figures):
+        with open(figures) as f:
+            summary["layout_summary"] = json.load(f)
+    if layout.returncode != 0 or not os.path.isdir(os.path.join(out, "postlayout")):
+        return summary
+    started = time.time()
+    energy = subprocess.run(["bash", os.path.join(ROOT, "scripts", "energy.sh"), "--top", "specular_" + name,
+                             "--netlist-dir", os.path.join(out, "postlayout"),
+                             "--vectors-tool", os.path.join(build, "tools", "variant_vectors", "specular_variant_vectors"),
+                             "--specular-tb", os.path.join(build, "testbench", "specular_tb"),
+                             "--counter", os.path.join(build, "tools", "vcd_activity", "specular_vcd_activity"),
+                             os.path.join(out, "energy"), rom], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    sys.stdout.write(energy.stdout)
+    steps["energy_wall_seconds"] = round(time.time() - started, 1)
+    summary["exit"] = energy.returncode
+    summary["passed_tests"] = 1 if energy.returncode == 0 else 0
+    figures = os.path.join(out, "energy", "energy.json")
+    if energy.returncode == 0 and os.path.exists(figures):
+        with open(figures) as f:
+            summary["energy"] = json.load(f)
+    return summary
 
 
 def merge(files):
@@ -139,6 +184,8 @@ def merge(files):
     for _, p, _, _ in parts:
         if "silicon_summary" in p["summary"]:
             print(json.dumps(p["summary"]["silicon_summary"], indent=2))
+        if "layout_summary" in p["summary"]:
+            print(json.dumps(p["summary"]["layout_summary"], indent=2))
         if "energy" in p["summary"]:
             print(json.dumps(p["summary"]["energy"], indent=2))
     return 1 if failed else 0

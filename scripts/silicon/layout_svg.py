@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """The routed die as an SVG (scripts/layout.sh; the PNG is KLayout's, layout_picture.rb).
 
-  layout_svg.py OUT_DIR TOP SVG
+  layout_svg.py OUT_DIR TOP SVG [MAX_SEGMENTS [BIN_UM]]
 
 From OUT_DIR/qflow/TOP_route.def and layout_summary.json: the die, the ROM macros (grey,
 named), the standard cells binned on a 10 um grid and each bin coloured by the block of
 Fig. 1 that has most cells in it (the instance names, instances.tsv), each block named at
 its centre, and the routed wires, each metal in its colour. A whole device has some
 300 000 wire segments: the longest are drawn, at most MAX_SEGMENTS, and the caption says
-from what length on.
+from what length on. MAX_SEGMENTS and BIN_UM (default 40000 and 10) make a smaller file
+(docs/layout/ keeps each picture under about 1 MB).
 """
 import json
 import re
@@ -24,10 +25,20 @@ BLOCK_COLOURS = ["#fde0dd", "#e5f5e0", "#deebf7", "#fff7bc", "#efedf5", "#fee6ce
 
 
 def main():
-    if len(sys.argv) != 4:
-        sys.stderr.write("usage: layout_svg.py OUT_DIR TOP SVG\n")
+    global MAX_SEGMENTS, BIN_UM
+    if len(sys.argv) not in (4, 5, 6):
+        sys.stderr.write("usage: layout_svg.py OUT_DIR TOP SVG [MAX_SEGMENTS [BIN_UM]]\n")
         return 2
-    out, top, svg_path = sys.argv[1:]
+    out, top, svg_path = sys.argv[1:4]
+    try:
+        MAX_SEGMENTS = int(sys.argv[4]) if len(sys.argv) > 4 else MAX_SEGMENTS
+        BIN_UM = float(sys.argv[5]) if len(sys.argv) > 5 else BIN_UM
+    except ValueError:
+        sys.stderr.write(f"layout_svg.py: MAX_SEGMENTS '{sys.argv[4]}' must be a whole number >= 1, BIN_UM a length > 0\n")
+        return 2
+    if MAX_SEGMENTS < 1 or BIN_UM <= 0:
+        sys.stderr.write(f"layout_svg.py: MAX_SEGMENTS {MAX_SEGMENTS} must be >= 1, BIN_UM {BIN_UM} > 0\n")
+        return 2
     s = json.load(open(f"{out}/layout_summary.json"))
     text = open(f"{out}/qflow/{top}_route.def").read()
     u = float(re.search(r"UNITS DISTANCE MICRONS (\d+)", text).group(1))

@@ -48,7 +48,10 @@ def main():
                     renamed += 1
                 line = f"{m.group(1)} {name}"
                 names[m.group(1)] = name
-        elif section in ("*CAP", "*RES"):
+        # a macro's bus pin comes without its closing bracket (*I *N:Q[11 O): OpenSTA stopped
+        # reading the whole device's SPEF there (syntax error), two thirds of the way in
+        line = re.sub(r"(\*\d+:\w+\[\d+)(?=\s|$)", r"\1]", line)
+        if section in ("*CAP", "*RES"):
             line = re.sub(r"(?<![\w*:])(\d+)_(\d+)(?![\w:])", r"*\1:\2", line)
             # the first field is the element's index, not a node
         fixed.append(line)

@@ -2,7 +2,8 @@
 # scripts/variant_job.py --merge (issue 26): the farm's merge of a variant's RTL-proof
 # and silicon tasks takes one complete set of passed shards and refuses anything else,
 # naming the shard or file: a missing shard, a duplicate, other settings, a failed shard.
-# Partials are written here by hand (no build needed).
+# Partials are written here by hand (no build needed). Also farm.sh's layout regression's
+# task list (issue 48).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 job=("python3" "$root/scripts/variant_job.py")
@@ -33,4 +34,17 @@ expect 2 "other settings" "${job[@]}" --merge "$scratch/p0.json" "$scratch/other
 expect 1 "failed: $scratch/failed1.json" "${job[@]}" --merge "$scratch/p0.json" "$scratch/failed1.json" "$scratch/p2.json"
 expect 2 "unknown job 'proof'" "${job[@]}" proof patent --partial "$scratch/x.json"
 expect 2 "energy is one task: --shard 0/1" "${job[@]}" energy device --shard 0/2 --partial "$scratch/x.json"
+expect 2 "layout is one task: --shard 0/1" "${job[@]}" layout device_sync --shard 0/2 --partial "$scratch/x.json"
+# farm.sh's layout regression (issue 48): one variant_job layout task per design, the two
+# device tops first, then every name the variant registry lists (a stand-in lister here:
+# no build needed).
+mkdir -p "$scratch/build/tools/variant_error"
+printf '#!/bin/sh\necho exp2 us5739820\n' >"$scratch/build/tools/variant_error/specular_variant_error"
+chmod +x "$scratch/build/tools/variant_error/specular_variant_error"
+diff <(bash "$root/scripts/farm.sh" list layout --build "$scratch/build") - <<'EOF' || fail "farm.sh list layout: not one layout task per design"
+0	layout_device	variant_job	layout device --shard 0/1
+1	layout_device_sync	variant_job	layout device_sync --shard 0/1
+2	layout_exp2	variant_job	layout exp2 --shard 0/1
+3	layout_us5739820	variant_job	layout us5739820 --shard 0/1
+EOF
 echo "variant_job_merge_test.sh: PASS"

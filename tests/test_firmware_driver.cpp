@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -541,6 +542,20 @@ TEST(FirmwareDriverAxi, TenThousandSingleOperationsEqualCorePolledAndByInterrupt
   EXPECT_GE(top.cpu.irqs - irq_mode_waits_before, 5000u);
   std::cout << "firmware driver on axi: " << tally.operations << " operations equal to Core, "
             << top.cpu.irqs << " interrupts, " << sc_core::sc_time_stamp() << " simulated\n";
+}
+
+// The IP is verilated for one configuration: another is refused by name, not run wrong.
+TEST(FirmwareDriverAxi, AConfigTheIpWasNotBuiltForIsRefusedByName) {
+  Config literal;
+  literal.saturation = Saturation::literal;
+  try {
+    SpecularAxiTarget target("axi_literal", literal);
+    ADD_FAILURE() << "saturation literal was accepted";
+  } catch (const std::invalid_argument& refused) {
+    const std::string what = refused.what();
+    EXPECT_NE(what.find("literal"), std::string::npos) << what;
+    EXPECT_NE(what.find("clamp"), std::string::npos) << what;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareDriver,

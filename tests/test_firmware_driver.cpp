@@ -544,6 +544,33 @@ TEST(FirmwareDriverAxi, TenThousandSingleOperationsEqualCorePolledAndByInterrupt
             << top.cpu.irqs << " interrupts, " << sc_core::sc_time_stamp() << " simulated\n";
 }
 
+// Each access on axi takes the bus cycles of the IP's timing (docs/rtl_ip.md, "Timing"),
+// counted as this transactor drives it (AW and W together, READY high at once): a read
+// 2 (AR taken, R the cycle after), a write 3 (AW and W held, the write done, B), a START
+// 7 (held, done at the 2nd edge, B with the results at the 4th edge after, then taken).
+TEST(FirmwareDriverAxi, EachAccessTakesTheCyclesOfTheIpTiming) {
+  std::vector<double> cycles;
+  elaborate_and_run(Kind::axi, [&](FirmwareCpu& cpu) {
+    auto timed = [&](auto&& access) {
+      const sc_time before = sc_core::sc_time_stamp() + cpu.keeper.get_local_time();
+      access();
+      const sc_time after = sc_core::sc_time_stamp() + cpu.keeper.get_local_time();
+      cycles.push_back((after - before - sc_time(2, SC_NS)) / period);  // less the CPU's 2 ns
+    };
+    timed([&] { FirmwareCpu::read32(&cpu, ip_base + SPECULAR_STATUS_OFFSET); });
+    timed([&] { FirmwareCpu::write32(&cpu, ip_base + SPECULAR_COS_OFFSET, 30000u); });
+    timed([&] { FirmwareCpu::write32(&cpu, ip_base + SPECULAR_N_OFFSET, 7u); });
+    timed([&] { FirmwareCpu::write32(&cpu, ip_base + SPECULAR_CONTROL_OFFSET, SPECULAR_CONTROL_START_MASK); });
+    timed([&] { FirmwareCpu::read32(&cpu, ip_base + SPECULAR_STATUS_OFFSET); });
+  });
+  ASSERT_EQ(cycles.size(), 5u);
+  EXPECT_DOUBLE_EQ(cycles[0], 2.0) << "read";
+  EXPECT_DOUBLE_EQ(cycles[1], 3.0) << "write";
+  EXPECT_DOUBLE_EQ(cycles[2], 3.0) << "write";
+  EXPECT_DOUBLE_EQ(cycles[3], 7.0) << "START";
+  EXPECT_DOUBLE_EQ(cycles[4], 2.0) << "read";
+}
+
 // The IP is verilated for one configuration: another is refused by name, not run wrong.
 TEST(FirmwareDriverAxi, AConfigTheIpWasNotBuiltForIsRefusedByName) {
   Config literal;

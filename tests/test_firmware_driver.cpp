@@ -56,6 +56,7 @@ struct FirmwareCpu : sc_core::sc_module {
   specular_dev dev{};
   sc_core::sc_event irq_event;  ///< notified by the done_irq callback
   std::size_t irqs = 0;         ///< rising edges of done_irq
+  tlm::tlm_response_status last_response = tlm::TLM_INCOMPLETE_RESPONSE;  ///< of the last access
   std::size_t shrinks = 0;      ///< calls whose returned delay was smaller than passed in
   std::size_t refused = 0;      ///< transactions answered with an error response
   std::size_t irq_idles = 0;    ///< interrupt-mode idle calls: the flag was not set yet
@@ -97,6 +98,7 @@ struct FirmwareCpu : sc_core::sc_module {
     tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     sc_time delay = keeper.get_local_time();
     socket->b_transport(tx, delay);
+    last_response = tx.get_response_status();
     if (delay < keeper.get_local_time()) ++shrinks;
     keeper.set(delay);
     keeper.inc(sc_time(2, SC_NS));
@@ -569,6 +571,35 @@ TEST(FirmwareDriverAxi, EachAccessTakesTheCyclesOfTheIpTiming) {
   EXPECT_DOUBLE_EQ(cycles[2], 3.0) << "write";
   EXPECT_DOUBLE_EQ(cycles[3], 7.0) << "START";
   EXPECT_DOUBLE_EQ(cycles[4], 2.0) << "read";
+}
+
+// A refusal on axi (SLVERR, DECERR) comes back as the TLM response SpecularTarget's class
+// comment gives for its cause, and nothing is stored: out of range and reserved bits
+// generic, a read-only row a command error, a hole (the batch window here) an address error.
+TEST(FirmwareDriverAxi, RefusalsComeBackAsTheResponsesOfTheirCause) {
+  std::vector<tlm::tlm_response_status> responses;
+  std::uint32_t n_after = 0, config_after = 0;
+  elaborate_and_run(Kind::axi, [&](FirmwareCpu& cpu) {
+    auto write = [&](std::uint32_t offset, std::uint32_t value) {
+      FirmwareCpu::write32(&cpu, ip_base + offset, value);
+      responses.push_back(cpu.last_response);
+    };
+    write(SPECULAR_N_OFFSET, 7u);
+    write(SPECULAR_N_OFFSET, 1001u);
+    write(SPECULAR_CONTROL_OFFSET, 2u);
+    write(SPECULAR_CONFIG_OFFSET, 0u);
+    write(SPECULAR_BATCH_COS_OFFSET, 100u);
+    n_after = FirmwareCpu::read32(&cpu, ip_base + SPECULAR_N_OFFSET);
+    config_after = FirmwareCpu::read32(&cpu, ip_base + SPECULAR_CONFIG_OFFSET);
+  });
+  ASSERT_EQ(responses.size(), 5u);
+  EXPECT_EQ(responses[0], tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(responses[1], tlm::TLM_GENERIC_ERROR_RESPONSE) << "N 1001";
+  EXPECT_EQ(responses[2], tlm::TLM_GENERIC_ERROR_RESPONSE) << "CONTROL reserved bit";
+  EXPECT_EQ(responses[3], tlm::TLM_COMMAND_ERROR_RESPONSE) << "CONFIG is read-only";
+  EXPECT_EQ(responses[4], tlm::TLM_ADDRESS_ERROR_RESPONSE) << "BATCH_COS is a hole on axi";
+  EXPECT_EQ(n_after, 7u) << "the refused N was stored";
+  EXPECT_EQ(config_after, 0x080D1000u) << "CONFIG of the default device";
 }
 
 // The IP is verilated for one configuration: another is refused by name, not run wrong.

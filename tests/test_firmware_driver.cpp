@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,7 @@ struct FirmwareCpu : sc_core::sc_module {
   specular_dev dev{};
   sc_core::sc_event irq_event;  ///< notified by the done_irq callback
   std::size_t irqs = 0;         ///< rising edges of done_irq
+  tlm::tlm_response_status last_response = tlm::TLM_INCOMPLETE_RESPONSE;  ///< of the last access
   std::size_t shrinks = 0;      ///< calls whose returned delay was smaller than passed in
   std::size_t refused = 0;      ///< transactions answered with an error response
   std::size_t irq_idles = 0;    ///< interrupt-mode idle calls: the flag was not set yet
@@ -96,6 +98,7 @@ struct FirmwareCpu : sc_core::sc_module {
     tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     sc_time delay = keeper.get_local_time();
     socket->b_transport(tx, delay);
+    last_response = tx.get_response_status();
     if (delay < keeper.get_local_time()) ++shrinks;
     keeper.set(delay);
     keeper.inc(sc_time(2, SC_NS));
@@ -513,6 +516,136 @@ TEST_P(FirmwareDriver, NegativeResultsUnderLiteralSaturationKeepTheirSign) {
   EXPECT_EQ(tally.mismatches, 0u) << "of " << tally.operations;
   EXPECT_GT(negative_out, 100u) << "too few negative pins: the sign path is not exercised";
   EXPECT_GT(negative_reg9, 100u);
+}
+
+// The `axi` target (issue 46): every access an AXI4-Lite transfer to the verilated IP.
+// Its batch windows are holes (DECERR, docs/rtl_ip.md) and the suite above counts its
+// batches' window accesses, so it does not run on axi: 10 000 single operations, half
+// polled and half by interrupt, each bit-equal to Core computed separately.
+TEST(FirmwareDriverAxi, TenThousandSingleOperationsEqualCorePolledAndByInterrupt) {
+  Tally tally;
+  std::size_t irq_mode_waits_before = 0;
+  FirmwareTop& top = elaborate_and_run(Kind::axi, [&](FirmwareCpu& cpu) {
+    const Core core;
+    OperandSource source;
+    bind(cpu, true, SPECULAR_WAIT_POLL);
+    single_operations(cpu, source, core, 5000, tally);
+    bind(cpu, false, SPECULAR_WAIT_IRQ);
+    irq_mode_waits_before = cpu.irqs;
+    single_operations(cpu, source, core, 5000, tally);
+  });
+  EXPECT_TRUE(top.cpu.finished) << "the program stopped early (an interrupt never came?)";
+  EXPECT_GE(tally.operations, 10000u);
+  EXPECT_EQ(tally.mismatches, 0u) << "of " << tally.operations;
+  EXPECT_EQ(top.cpu.shrinks, 0u) << "a returned delay shrank (riscv-vp would abort)";
+  EXPECT_EQ(top.cpu.refused, 0u);
+  // Every interrupt-mode wait ended with done_irq's rising edge, driven from the RTL's pin.
+  EXPECT_GE(tally.irq_mode_operations, 5000u);
+  EXPECT_GE(top.cpu.irqs - irq_mode_waits_before, 5000u);
+  std::cout << "firmware driver on axi: " << tally.operations << " operations equal to Core, "
+            << top.cpu.irqs << " interrupts, " << sc_core::sc_time_stamp() << " simulated\n";
+}
+
+// specular_shade() on axi: the driver reads BATCH_CAPACITY 0 from the RTL at init and runs
+// one operation per pixel (no window access, nothing refused), polled and by interrupt;
+// every pixel bit-equal to Core computed separately.
+TEST(FirmwareDriverAxi, ShadeReadsCapacityZeroAndRunsEachPixel) {
+  Tally tally;
+  std::uint32_t capacity = 0xFFFFFFFFu;
+  FirmwareTop& top = elaborate_and_run(Kind::axi, [&](FirmwareCpu& cpu) {
+    const Core core;
+    std::mt19937 random(46u);
+    for (const bool polled : {true, false}) {
+      bind(cpu, polled, polled ? SPECULAR_WAIT_POLL : SPECULAR_WAIT_IRQ);
+      capacity = cpu.dev.batch_capacity;
+      const std::uint32_t rgb[3] = {200u, 17u, 255u};
+      std::vector<std::uint32_t> cos(150);
+      for (auto& c : cos) c = static_cast<std::uint32_t>(random() % 65537u);
+      std::vector<std::int32_t> out(3 * cos.size());
+      ASSERT_EQ(specular_shade(&cpu.dev, 12, rgb, cos.data(), cos.size(), out.data()), SPECULAR_OK);
+      for (std::size_t i = 0; i < cos.size(); ++i) {
+        const Result expected = core.run({cos[i], 12, {rgb[0], rgb[1], rgb[2]}});
+        bool equal = true;
+        for (int ch = 0; ch < 3; ++ch) equal = equal && out[3 * i + ch] == expected.out[ch];
+        tally.expect(equal, "axi shade, cos " + std::to_string(cos[i]));
+      }
+    }
+  });
+  EXPECT_TRUE(top.cpu.finished);
+  EXPECT_EQ(capacity, 0u) << "BATCH_CAPACITY as the driver read it from specular_ip_axi";
+  EXPECT_EQ(tally.operations, 300u);
+  EXPECT_EQ(tally.mismatches, 0u);
+  EXPECT_EQ(top.cpu.refused, 0u) << "the driver touched a batch window (a hole on axi)";
+}
+
+// Each access on axi takes the bus cycles of the IP's timing (docs/rtl_ip.md, "Timing"),
+// counted as this transactor drives it (AW and W together, READY high at once): a read
+// 2 (AR taken, R the cycle after), a write 3 (AW and W held, the write done, B), a START
+// 7 (held, done at the 2nd edge, B with the results at the 4th edge after, then taken).
+TEST(FirmwareDriverAxi, EachAccessTakesTheCyclesOfTheIpTiming) {
+  std::vector<double> cycles;
+  elaborate_and_run(Kind::axi, [&](FirmwareCpu& cpu) {
+    auto timed = [&](auto&& access) {
+      const sc_time before = sc_core::sc_time_stamp() + cpu.keeper.get_local_time();
+      access();
+      const sc_time after = sc_core::sc_time_stamp() + cpu.keeper.get_local_time();
+      cycles.push_back((after - before - sc_time(2, SC_NS)) / period);  // less the CPU's 2 ns
+    };
+    timed([&] { FirmwareCpu::read32(&cpu, ip_base + SPECULAR_STATUS_OFFSET); });
+    timed([&] { FirmwareCpu::write32(&cpu, ip_base + SPECULAR_COS_OFFSET, 30000u); });
+    timed([&] { FirmwareCpu::write32(&cpu, ip_base + SPECULAR_N_OFFSET, 7u); });
+    timed([&] { FirmwareCpu::write32(&cpu, ip_base + SPECULAR_CONTROL_OFFSET, SPECULAR_CONTROL_START_MASK); });
+    timed([&] { FirmwareCpu::read32(&cpu, ip_base + SPECULAR_STATUS_OFFSET); });
+  });
+  ASSERT_EQ(cycles.size(), 5u);
+  EXPECT_DOUBLE_EQ(cycles[0], 2.0) << "read";
+  EXPECT_DOUBLE_EQ(cycles[1], 3.0) << "write";
+  EXPECT_DOUBLE_EQ(cycles[2], 3.0) << "write";
+  EXPECT_DOUBLE_EQ(cycles[3], 7.0) << "START";
+  EXPECT_DOUBLE_EQ(cycles[4], 2.0) << "read";
+}
+
+// A refusal on axi (SLVERR, DECERR) comes back as the TLM response SpecularTarget's class
+// comment gives for its cause, and nothing is stored: out of range and reserved bits
+// generic, a read-only row a command error, a hole (the batch window here) an address error.
+TEST(FirmwareDriverAxi, RefusalsComeBackAsTheResponsesOfTheirCause) {
+  std::vector<tlm::tlm_response_status> responses;
+  std::uint32_t n_after = 0, config_after = 0;
+  elaborate_and_run(Kind::axi, [&](FirmwareCpu& cpu) {
+    auto write = [&](std::uint32_t offset, std::uint32_t value) {
+      FirmwareCpu::write32(&cpu, ip_base + offset, value);
+      responses.push_back(cpu.last_response);
+    };
+    write(SPECULAR_N_OFFSET, 7u);
+    write(SPECULAR_N_OFFSET, 1001u);
+    write(SPECULAR_CONTROL_OFFSET, 2u);
+    write(SPECULAR_CONFIG_OFFSET, 0u);
+    write(SPECULAR_BATCH_COS_OFFSET, 100u);
+    n_after = FirmwareCpu::read32(&cpu, ip_base + SPECULAR_N_OFFSET);
+    config_after = FirmwareCpu::read32(&cpu, ip_base + SPECULAR_CONFIG_OFFSET);
+  });
+  ASSERT_EQ(responses.size(), 5u);
+  EXPECT_EQ(responses[0], tlm::TLM_OK_RESPONSE);
+  EXPECT_EQ(responses[1], tlm::TLM_GENERIC_ERROR_RESPONSE) << "N 1001";
+  EXPECT_EQ(responses[2], tlm::TLM_GENERIC_ERROR_RESPONSE) << "CONTROL reserved bit";
+  EXPECT_EQ(responses[3], tlm::TLM_COMMAND_ERROR_RESPONSE) << "CONFIG is read-only";
+  EXPECT_EQ(responses[4], tlm::TLM_ADDRESS_ERROR_RESPONSE) << "BATCH_COS is a hole on axi";
+  EXPECT_EQ(n_after, 7u) << "the refused N was stored";
+  EXPECT_EQ(config_after, 0x080D1000u) << "CONFIG of the default device";
+}
+
+// The IP is verilated for one configuration: another is refused by name, not run wrong.
+TEST(FirmwareDriverAxi, AConfigTheIpWasNotBuiltForIsRefusedByName) {
+  Config literal;
+  literal.saturation = Saturation::literal;
+  try {
+    SpecularAxiTarget target("axi_literal", literal);
+    ADD_FAILURE() << "saturation literal was accepted";
+  } catch (const std::invalid_argument& refused) {
+    const std::string what = refused.what();
+    EXPECT_NE(what.find("literal"), std::string::npos) << what;
+    EXPECT_NE(what.find("clamp"), std::string::npos) << what;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareDriver,

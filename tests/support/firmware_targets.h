@@ -1,5 +1,5 @@
-// The four TLM targets a firmware test runs the C driver against (issues 35, 47): lt,
-// pin with PinDelay::keep (what a riscv-vp-style initiator accepts), rtl and rtl-sync,
+// The TLM targets a firmware test runs the C driver against (issues 35, 46, 47): lt,
+// pin with PinDelay::keep (what a riscv-vp-style initiator accepts), rtl, rtl-sync and axi,
 // each built with the default 10 ns clock; a name for each as GoogleTest's parameter.
 #ifndef SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
 #define SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
@@ -11,13 +11,14 @@
 
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "specular/twin/axi_target.h"
 #include "specular/twin/rtl_sync_target.h"
 #include "specular/twin/rtl_target.h"
 
 namespace specular {
 namespace firmware_targets {
 
-enum class Kind { lt, pin, rtl, rtl_sync };
+enum class Kind { lt, pin, rtl, rtl_sync, axi };
 
 inline std::string target_name(Kind kind) {
   switch (kind) {
@@ -25,6 +26,7 @@ inline std::string target_name(Kind kind) {
     case Kind::pin: return "pin_keep";
     case Kind::rtl: return "rtl";
     case Kind::rtl_sync: return "rtl_sync";
+    case Kind::axi: return "axi";
   }
   return "unknown";
 }
@@ -38,6 +40,7 @@ inline std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind, 
     case Kind::pin: return std::make_unique<SpecularPinTarget>(name, config, period, false, PinDelay::keep);
     case Kind::rtl: return std::make_unique<SpecularRtlTarget>(name, config, period);
     case Kind::rtl_sync: return std::make_unique<SpecularRtlSyncTarget>(name, config, period);
+    case Kind::axi: return std::make_unique<SpecularAxiTarget>(name, config, period);
   }
   return nullptr;
 }

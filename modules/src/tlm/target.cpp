@@ -447,6 +447,12 @@ void SpecularTarget::run(const std::uint32_t* cos, std::size_t count, std::uint3
   word(Reg::norm39) = low_word(last_.norm39);
 }
 
+void SpecularTarget::rtl_done_irq(bool level, const sc_core::sc_time& delay) {
+  done_ = level;
+  if (level) done_at_ = sc_core::sc_time_stamp() + delay;
+  irq_event_.notify(delay);
+}
+
 void SpecularTarget::drive_irq() {
   // Notifications keep only the earliest pending time, so this method recomputes the
   // level from the register state and re-arms itself for a rise still ahead.

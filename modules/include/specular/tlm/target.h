@@ -95,6 +95,12 @@ class SpecularTarget : public sc_core::sc_module {
   /// socket's nb-to-b conversion). An implementation whose `execute` waits serialises
   /// accesses around this (SpecularPinTarget: one at a time, in arrival order).
   virtual void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
+  /// The debug transport (transport_dbg of the socket); `axi` reads over the RTL.
+  virtual unsigned int transport_dbg(tlm::tlm_generic_payload& tx);
+  /// For a target whose register file lives elsewhere (`axi`: in the RTL): done_irq
+  /// takes `level` at `delay` after the current time (the base's own STATUS.done is
+  /// then this level; the base's register file is otherwise unused).
+  void rtl_done_irq(bool level, const sc_core::sc_time& delay);
 
  private:
   /// What an access tried, for the refusal's report.
@@ -109,8 +115,6 @@ class SpecularTarget : public sc_core::sc_module {
     std::uint64_t value;
     const char* rule;
   };
-  unsigned int transport_dbg(tlm::tlm_generic_payload& tx);
-
   /// The checks of the class comment up to the byte enables; TLM_OK_RESPONSE if the
   /// access may go on to the command.
   tlm::tlm_response_status check_access(const tlm::tlm_generic_payload& tx,

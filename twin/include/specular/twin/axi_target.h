@@ -1,0 +1,53 @@
+/// \file
+/// `axi`: the TLM target whose every access is an AXI4-Lite transfer to the verilated
+/// whole IP (rtl/ip/specular_ip_axi.v), clocked inside b_transport.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "specular/core.h"
+#include "specular/tlm/target.h"
+
+namespace specular {
+
+class AxiIpModel;
+
+/// The `axi` target: a TLM-2.0 -> AXI4-Lite transactor over the verilated IP.
+///
+/// It derives from SpecularTarget for its public face (socket, done_irq, on_done_irq,
+/// config(), clock_period()) so that it fits every suite's make_target; the base's C++
+/// register file is not used: b_transport turns each access into AXI4-Lite transfers
+/// (4 bytes: one, WSTRB 0xF; 1 and 2 bytes: one with those lanes' strobes; 8 bytes and
+/// window bursts: consecutive single transfers, AXI4-Lite has no bursts), clocks the
+/// model until each response and annotates the cycles x clock_period() on `delay`. A
+/// START's B comes after the operation, so the operation ends inside the access as on
+/// `lt`. The IP is idle between accesses (no operation outlives its START's response),
+/// so the time between calls needs no clocking. OKAY -> TLM_OK; DECERR ->
+/// TLM_ADDRESS_ERROR_RESPONSE; SLVERR -> the response `lt` gives for the cause the RTL
+/// set in STATUS (read back over AXI). done_irq follows the RTL's done_irq pin at the
+/// cycle it changed. Debug reads are AXI reads clocked in zero simulated time; debug
+/// writes are refused (0 bytes). `execute` is never called.
+/// Widths other than the defaults are refused with std::invalid_argument (the IP is
+/// verilated at the default widths only).
+class SpecularAxiTarget : public SpecularTarget {
+ public:
+  explicit SpecularAxiTarget(sc_core::sc_module_name name, const Config& config = Config{},
+                             const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS));
+  ~SpecularAxiTarget() override;
+
+  /// Bus clock cycles clocked since construction (reset excluded).
+  std::uint64_t cycles() const;
+
+ private:
+  void execute(const Operands& shared, const std::uint32_t* cos, std::size_t count,
+               std::uint32_t* out, Result& last, sc_core::sc_time& delay) override;
+  void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay) override;
+  unsigned int transport_dbg(tlm::tlm_generic_payload& tx) override;
+  /// The whole access as AXI transfers; returns the TLM response.
+  tlm::tlm_response_status access(tlm::tlm_generic_payload& tx, std::uint64_t& cycles_taken);
+
+  std::unique_ptr<AxiIpModel> ip_;
+};
+
+}  // namespace specular

@@ -1,0 +1,35 @@
+// The verilated whole IP (rtl/ip/specular_ip_axi.v) as an AXI4-Lite master drives it,
+// one transfer at a time, for the TLM `axi` target (axi_target.h). No SystemC here.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "specular/core.h"
+
+namespace specular {
+
+class AxiIpModel {
+ public:
+  /// Reset, ROMs written with the words of config.widths.
+  explicit AxiIpModel(const Config& config);
+  ~AxiIpModel();
+  /// One write transfer (AW and W together); returns BRESP. Clocks until B.
+  std::uint32_t write(std::uint32_t address, std::uint32_t data, std::uint32_t strobes);
+  /// One read transfer; returns RRESP and RDATA in `data`. Clocks until R.
+  std::uint32_t read(std::uint32_t address, std::uint32_t& data);
+  /// The first AXI4-Lite rule the IP broke since the last call, or "".
+  std::string take_violation();
+  bool done_irq() const;
+  /// Clock cycles since reset.
+  std::uint64_t cycles() const;
+  /// The cycle count at which done_irq last changed.
+  std::uint64_t irq_changed_at() const;
+
+ private:
+  class Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace specular

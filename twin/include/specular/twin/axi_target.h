@@ -32,6 +32,9 @@ class AxiIpModel;
 /// verilated at the default widths only).
 class SpecularAxiTarget : public SpecularTarget {
  public:
+  /// A transactor over the verilated specular_ip_axi, reset at construction (not
+  /// annotated); `clock_period` is the bus clock the cycles are annotated in. Throws
+  /// std::invalid_argument for a Config the IP was not verilated for (widths, policies).
   explicit SpecularAxiTarget(sc_core::sc_module_name name, const Config& config = Config{},
                              const sc_core::sc_time& clock_period = sc_core::sc_time(10, sc_core::SC_NS));
   ~SpecularAxiTarget() override;

@@ -33,7 +33,7 @@ work=$(mktemp -d "${TMPDIR:-/tmp}/specular_consumer.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 
 rtl=$(sed -n 's/^SPECULAR_BUILD_RTL:BOOL=//p' "$build/CMakeCache.txt")
-case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl rtl-sync" ;; *) rtl=OFF; targets="lt pin" ;; esac
+case "$rtl" in ON|on|TRUE|true|1|YES|yes) rtl=ON; targets="lt pin rtl rtl-sync axi" ;; *) rtl=OFF; targets="lt pin" ;; esac
 
 echo "== install $build, move it to $work/prefix (rtl component: $rtl)"
 cmake --build "$build" --target specular -j "$jobs"

@@ -28,7 +28,7 @@ TEST_P(FirmwareExampleIrqDirect, ChecksEveryResultAgainstCoreAndPasses) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareExampleIrqDirect,
-                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync),
+                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync, Kind::axi),
                          example_host::kind_name);
 
 }  // namespace

@@ -50,7 +50,7 @@ std::string plic_test_name(const testing::TestParamInfo<std::tuple<Kind, bool>>&
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareExampleIrqPlic,
-                         testing::Combine(testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync),
+                         testing::Combine(testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync, Kind::axi),
                                           testing::Bool()),
                          plic_test_name);
 

@@ -27,7 +27,7 @@ TEST_P(FirmwareExamplePolled, ChecksEveryResultAgainstCoreAndPasses) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareExamplePolled,
-                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync),
+                         testing::Values(Kind::lt, Kind::pin, Kind::rtl, Kind::rtl_sync, Kind::axi),
                          example_host::kind_name);
 
 }  // namespace

@@ -107,7 +107,7 @@ std::string rv32_test_name(const testing::TestParamInfo<std::tuple<Kind, std::st
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FirmwareExampleRv32,
-                         testing::Combine(testing::Values(Kind::lt, Kind::rtl_sync),
+                         testing::Combine(testing::Values(Kind::lt, Kind::rtl_sync, Kind::axi),
                                           testing::Values(std::string("poll"), std::string("irq"),
                                                           std::string("irq_direct"))),
                          rv32_test_name);

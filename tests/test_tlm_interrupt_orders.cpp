@@ -133,7 +133,7 @@ TEST(InterruptOrderRecording, EachScenarioHitsItsOwnBins) {
 
 INSTANTIATE_TEST_SUITE_P(
     EveryOrder, InterruptOrders,
-    ::testing::Combine(::testing::Values(Kind::lt, Kind::pin), ::testing::Bool(),
+    ::testing::Combine(::testing::Values(Kind::lt, Kind::pin, Kind::axi), ::testing::Bool(),
                        ::testing::Values(Order::acknowledged_before_next_start,
                                          Order::acknowledged_after_next_start)),
     param_name);

@@ -35,6 +35,16 @@ void expect_refused(Endpoint& e, ErrorCause cause, std::uint32_t address, const 
   EXPECT_EQ(e.write(Reg::status, status_bits::error), tlm::TLM_OK_RESPONSE);
 }
 
+/// A refusal of the payload's shape (streaming, a partial word): on axi the transactor
+/// refuses it before the bus, as AXI4-Lite cannot carry it, and the RTL's STATUS stays
+/// clear (docs/rtl_ip.md); elsewhere as expect_refused.
+void expect_shape_refused(Endpoint& e, ErrorCause cause, std::uint32_t address, const char* what) {
+  if (e.kind == Kind::axi)
+    EXPECT_FALSE(e.read(Reg::status) & status_bits::error) << what << ": refused before the bus";
+  else
+    expect_refused(e, cause, address, what);
+}
+
 /// COS, N, R, G, B as the single registers hold them.
 std::array<std::uint32_t, 5> single_registers(Endpoint& e) {
   return {e.read(Reg::cos), e.read(Reg::n), e.read(Reg::r), e.read(Reg::g), e.read(Reg::b)};
@@ -169,17 +179,17 @@ TEST_P(OperandBurst, BurstsPastTheBlocksAndBadShapesAreRefused) {
     expect_refused(e, ErrorCause::read_only, results_at, "write to RESULTS");
     EXPECT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, operands_at, words, 24, 4),
               tlm::TLM_BURST_ERROR_RESPONSE);
-    expect_refused(e, ErrorCause::burst, operands_at, "streaming width 4");
+    expect_shape_refused(e, ErrorCause::burst, operands_at, "streaming width 4");
     EXPECT_EQ(e.transport(tlm::TLM_WRITE_COMMAND, operands_at, words, 6),
               tlm::TLM_BURST_ERROR_RESPONSE);
-    expect_refused(e, ErrorCause::burst, operands_at, "6 bytes");
+    expect_shape_refused(e, ErrorCause::burst, operands_at, "6 bytes");
     EXPECT_EQ(single_registers(e), (std::array<std::uint32_t, 5>{0, 1, 0, 0, 0}))
         << "reset values kept";
     EXPECT_FALSE(e.read(Reg::status) & status_bits::done) << "nothing ran";
   });
 }
 
-INSTANTIATE_TEST_SUITE_P(BothImplementations, OperandBurst, ::testing::Values(Kind::lt, Kind::pin),
+INSTANTIATE_TEST_SUITE_P(BothImplementations, OperandBurst, ::testing::Values(Kind::lt, Kind::pin, Kind::axi),
                          [](const ::testing::TestParamInfo<Kind>& info) {
                            return std::string(to_string(info.param));
                          });

@@ -1,7 +1,7 @@
 // soc_platform: the specular IP in a small SoC (platform.h) — a processor-like
 // initiator with a quantum keeper, a generic bus, a RAM — run with the chosen target.
 //
-//   soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]
+//   soc_platform [--target lt|pin|rtl|rtl-sync|axi] [--operations N] [--strict]
 //                [--pin-delay keep|consume]
 //
 // --strict: the CPU asserts, as riscv-vp's memory interface does, that b_transport
@@ -22,7 +22,7 @@ namespace {
 
 int usage(const std::string& problem) {
   std::cerr << "soc_platform: " << problem << "\n"
-            << "usage: soc_platform [--target lt|pin|rtl|rtl-sync] [--operations N] [--strict]"
+            << "usage: soc_platform [--target lt|pin|rtl|rtl-sync|axi] [--operations N] [--strict]"
                " [--pin-delay keep|consume]  (N in 1.."
             << soc::max_operations << ")\n";
   return 2;
@@ -46,7 +46,8 @@ int sc_main(int argc, char* argv[]) {
       else if (target_name == "pin") target = soc::Target::pin;
       else if (target_name == "rtl") target = soc::Target::rtl;
       else if (target_name == "rtl-sync") target = soc::Target::rtl_sync;
-      else return usage("unknown target '" + target_name + "' (allowed: lt, pin, rtl, rtl-sync)");
+      else if (target_name == "axi") target = soc::Target::axi;
+      else return usage("unknown target '" + target_name + "' (allowed: lt, pin, rtl, rtl-sync, axi)");
     } else if (arg == "--operations") {
       const std::string value = argv[++i];
       char* end = nullptr;

@@ -35,6 +35,7 @@
 #include "bus.h"
 #include "specular/specular.h"
 #ifdef SOC_PLATFORM_HAS_RTL
+#include "specular/twin/axi_target.h"
 #include "specular/twin/rtl_sync_target.h"
 #include "specular/twin/rtl_target.h"
 #endif
@@ -49,7 +50,7 @@ constexpr std::uint64_t ram_bytes = 0x200000;
 static_assert(12 * max_operations <= ram_bytes, "the RAM holds every operation's results");
 constexpr std::uint64_t ip_base = 0x10000000;
 
-enum class Target { lt, pin, rtl, rtl_sync };
+enum class Target { lt, pin, rtl, rtl_sync, axi };
 
 /// A small processor-like initiator: loads and stores over its bus socket, a wait
 /// for interrupt on `irq`, and the program in program().
@@ -233,7 +234,7 @@ class Platform : public sc_core::sc_module {
     (void)target;
     return true;
 #else
-    return target != Target::rtl && target != Target::rtl_sync;
+    return target == Target::lt || target == Target::pin;
 #endif
   }
 
@@ -258,12 +259,14 @@ class Platform : public sc_core::sc_module {
 #ifdef SOC_PLATFORM_HAS_RTL
       case Target::rtl: return std::make_unique<specular::SpecularRtlTarget>("ip");
       case Target::rtl_sync: return std::make_unique<specular::SpecularRtlSyncTarget>("ip");
+      case Target::axi: return std::make_unique<specular::SpecularAxiTarget>("ip");
 #else
       case Target::rtl:
-      case Target::rtl_sync: break;
+      case Target::rtl_sync:
+      case Target::axi: break;
 #endif
     }
-    throw std::invalid_argument("this build of soc_platform has no rtl or rtl-sync target");
+    throw std::invalid_argument("this build of soc_platform has no rtl, rtl-sync or axi target");
   }
 };
 

@@ -1,9 +1,11 @@
 // The TLM targets a firmware test runs the C driver against (issues 35, 46, 47): lt,
-// pin with PinDelay::keep (what a riscv-vp-style initiator accepts), rtl, rtl-sync and axi,
-// each built with the default 10 ns clock; a name for each as GoogleTest's parameter.
+// pin with PinDelay::keep (what a riscv-vp-style initiator accepts), rtl, rtl-sync, axi,
+// and axi with its transactor stalling every channel at random (seeded), each built with
+// the default 10 ns clock; a name for each as GoogleTest's parameter.
 #ifndef SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
 #define SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -18,7 +20,14 @@
 namespace specular {
 namespace firmware_targets {
 
-enum class Kind { lt, pin, rtl, rtl_sync, axi };
+enum class Kind { lt, pin, rtl, rtl_sync, axi, axi_stalled };
+
+/// The RTL IP behind its AXI4-Lite transactor (no batch windows: BATCH_CAPACITY 0).
+inline bool is_axi(Kind kind) { return kind == Kind::axi || kind == Kind::axi_stalled; }
+
+/// axi_stalled's seed and the chance of a low READY in a cycle (AxiTarget::stall_at_random).
+constexpr std::uint32_t stall_seed = 46;
+constexpr unsigned stall_percent = 30;
 
 inline std::string target_name(Kind kind) {
   switch (kind) {
@@ -27,6 +36,7 @@ inline std::string target_name(Kind kind) {
     case Kind::rtl: return "rtl";
     case Kind::rtl_sync: return "rtl_sync";
     case Kind::axi: return "axi";
+    case Kind::axi_stalled: return "axi_stalled";
   }
   return "unknown";
 }
@@ -41,6 +51,11 @@ inline std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind, 
     case Kind::rtl: return std::make_unique<SpecularRtlTarget>(name, config, period);
     case Kind::rtl_sync: return std::make_unique<SpecularRtlSyncTarget>(name, config, period);
     case Kind::axi: return std::make_unique<SpecularAxiTarget>(name, config, period);
+    case Kind::axi_stalled: {
+      auto target = std::make_unique<SpecularAxiTarget>(name, config, period);
+      target->stall_at_random(stall_seed, stall_percent);
+      return target;
+    }
   }
   return nullptr;
 }

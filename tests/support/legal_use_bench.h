@@ -1,5 +1,5 @@
 // A bench for "any legal TLM-2.0 use" (test_tlm_legal_use.cpp, fuzz_tlm_sequences.cpp):
-// one target (lt, pin or rtl) behind BaseProtocolChecker, driven by LegalInitiator
+// one target (lt, pin, rtl or axi) behind BaseProtocolChecker, driven by LegalInitiator
 // from any number of threads. The bench runs a setup function, then the worker
 // threads side by side, and stops the kernel when the last one ends. No gtest here.
 #pragma once
@@ -15,6 +15,7 @@
 #include "specular/core.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "specular/twin/axi_target.h"
 #include "specular/twin/rtl_target.h"
 #include "base_protocol_checker.h"
 #include "legal_initiator.h"
@@ -22,17 +23,18 @@
 namespace specular {
 namespace tlm_testing {
 
-enum class Target { lt, pin, rtl };
+enum class Target { lt, pin, rtl, axi };
 
 inline const char* to_string(Target target) {
-  return target == Target::lt ? "lt" : target == Target::pin ? "pin" : "rtl";
+  return target == Target::lt ? "lt" : target == Target::pin ? "pin" : target == Target::rtl ? "rtl" : "axi";
 }
 
 inline std::unique_ptr<SpecularTarget> make_target(Target target, const Config& config,
                                                    const sc_core::sc_time& period) {
   if (target == Target::lt) return std::make_unique<SpecularLtTarget>("target", config, period);
   if (target == Target::pin) return std::make_unique<SpecularPinTarget>("target", config, period);
-  return std::make_unique<SpecularRtlTarget>("target", config, period);
+  if (target == Target::rtl) return std::make_unique<SpecularRtlTarget>("target", config, period);
+  return std::make_unique<SpecularAxiTarget>("target", config, period);
 }
 
 class LegalUseBench : public sc_core::sc_module {

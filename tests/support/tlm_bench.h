@@ -1,4 +1,4 @@
-// A bench for the TLM tests (test_tlm_*): one or more targets (lt, pin, rtl, rtl_sync), each behind
+// A bench for the TLM tests (test_tlm_*): one or more targets (lt, pin, rtl, rtl_sync, axi), each behind
 // its own initiator socket with a SpecularDriver, its done_irq recorded edge by edge,
 // and scenario threads that run the test body. One elaboration per TEST.
 #pragma once
@@ -21,6 +21,7 @@
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
+#include "specular/twin/axi_target.h"
 #include "specular/twin/rtl_sync_target.h"
 #include "specular/twin/rtl_target.h"
 
@@ -30,10 +31,17 @@ namespace tlm_testing {
 using sc_core::sc_time;
 using sc_core::SC_NS;
 
-enum class Kind { lt, pin, rtl, rtl_sync };
+enum class Kind { lt, pin, rtl, rtl_sync, axi };
 
 inline const char* to_string(Kind kind) {
-  return kind == Kind::lt ? "lt" : kind == Kind::pin ? "pin" : kind == Kind::rtl ? "rtl" : "rtl_sync";
+  switch (kind) {
+    case Kind::lt: return "lt";
+    case Kind::pin: return "pin";
+    case Kind::rtl: return "rtl";
+    case Kind::rtl_sync: return "rtl_sync";
+    case Kind::axi: return "axi";
+  }
+  return "unknown";
 }
 
 /// One target with the initiator side that talks to it.
@@ -53,8 +61,10 @@ class Endpoint : public sc_core::sc_module {
       target = std::make_unique<SpecularPinTarget>("target", config, period);
     else if (kind == Kind::rtl)
       target = std::make_unique<SpecularRtlTarget>("target", config, period);
-    else
+    else if (kind == Kind::rtl_sync)
       target = std::make_unique<SpecularRtlSyncTarget>("target", config, period);
+    else
+      target = std::make_unique<SpecularAxiTarget>("target", config, period);
     socket.bind(target->socket);
     if (bind_irq) {
       target->done_irq(irq);

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "specular/core.h"
 
@@ -24,8 +26,10 @@ class AxiIpModel {
   bool done_irq() const;
   /// Clock cycles since reset.
   std::uint64_t cycles() const;
-  /// The cycle count at which done_irq last changed.
-  std::uint64_t irq_changed_at() const;
+  /// Every change of done_irq since the last call: (cycle count, new level).
+  std::vector<std::pair<std::uint64_t, bool>> take_irq_edges();
+  /// The master stalls every channel at random from now on (seeded; 0 %: never).
+  void stall_at_random(std::uint32_t seed, unsigned percent);
 
  private:
   class Impl;

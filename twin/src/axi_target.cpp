@@ -10,7 +10,6 @@ namespace specular {
 
 namespace {
 constexpr std::uint32_t axi_okay = 0, axi_slverr = 2, axi_decerr = 3;
-constexpr std::uint64_t status_offset = 0x00C;
 
 // The TLM response `lt` gives for a refusal of `cause` (modules/src/tlm/target.cpp).
 tlm::tlm_response_status response_for(ErrorCause cause) {
@@ -53,6 +52,13 @@ SpecularAxiTarget::~SpecularAxiTarget() = default;
 
 std::uint64_t SpecularAxiTarget::cycles() const { return ip_->cycles(); }
 
+void SpecularAxiTarget::stall_at_random(std::uint32_t seed, unsigned percent) {
+  if (percent > 50)
+    throw std::invalid_argument("axi target: stall percent " + std::to_string(percent) +
+                                " outside 0..50 (READY must come within the 64-cycle limit of a transfer)");
+  ip_->stall_at_random(seed, percent);
+}
+
 void SpecularAxiTarget::execute(const Operands&, const std::uint32_t*, std::size_t, std::uint32_t*,
                                 Result&, sc_core::sc_time&) {
   // Never called: b_transport sends every access to the RTL.
@@ -61,74 +67,138 @@ void SpecularAxiTarget::execute(const Operands&, const std::uint32_t*, std::size
 tlm::tlm_response_status SpecularAxiTarget::access(tlm::tlm_generic_payload& tx,
                                                    std::uint64_t& cycles_taken) {
   const std::uint64_t before = ip_->cycles();
-  const std::uint64_t address = tx.get_address();
-  const unsigned length = tx.get_data_length();
-  unsigned char* data = tx.get_data_ptr();
-  const unsigned char* enables = tx.get_byte_enable_ptr();
-  const unsigned enables_length = tx.get_byte_enable_length();
-  const bool is_write = tx.get_command() == tlm::TLM_WRITE_COMMAND;
   auto finish = [&](tlm::tlm_response_status status) {
     cycles_taken = ip_->cycles() - before;
     return status;
   };
-  if (tx.get_command() == tlm::TLM_IGNORE_COMMAND) return finish(tlm::TLM_OK_RESPONSE);
-  // Bytes per transfer: 1 and 2 in one word, otherwise whole words.
-  const bool sub_word = length == 1 || length == 2;
-  if (!sub_word && (length == 0 || length % 4 != 0)) return finish(tlm::TLM_BURST_ERROR_RESPONSE);
-  if (address > 0xFFFFFFFFull) return finish(tlm::TLM_ADDRESS_ERROR_RESPONSE);
-  const unsigned transfers = sub_word ? 1 : length / 4;
-  for (unsigned t = 0; t < transfers; ++t) {
-    const std::uint64_t byte_address = address + 4ull * t;
-    const unsigned lane0 = sub_word ? static_cast<unsigned>(address % 4) : 0;
-    const unsigned bytes = sub_word ? length : 4;
+  const Attempt attempt{tx.get_command(), tx.get_address(), tx.get_data_length()};
+  // The payload's shape first, by lt's own checks: AXI4-Lite cannot carry what they
+  // refuse (a misaligned half word, 8 bytes off a doubleword, a streaming width, byte
+  // enables that leave a byte out, an address above 32 bits), so such an access never
+  // reaches the RTL and its STATUS stays as it was.
+  const bool is_write = attempt.command == tlm::TLM_WRITE_COMMAND;
+  unsigned char* data = tx.get_data_ptr();
+  const RegisterInfo* decoded = decode(attempt.address & ~std::uint64_t{3});
+  const bool hole = decoded == nullptr || decoded->reg == Reg::batch_cos || decoded->reg == Reg::batch_out;
+  if (attempt.address <= 0xFFFFFFFFull && hole && (is_write || attempt.command == tlm::TLM_READ_COMMAND)) {
+    // A hole (or beyond the map) is the RTL's to refuse: one transfer there, DECERR. The
+    // IP has no batch windows (BATCH_CAPACITY 0, docs/decisions.md): holes too.
+    std::uint32_t word = 0;
+    return finish(transfer(attempt, attempt.address, is_write, word, 0xF));
+  }
+  const RegisterInfo* row = nullptr;
+  if (const tlm::tlm_response_status shape = check_access(tx, attempt, row); shape != tlm::TLM_OK_RESPONSE) {
+    // A burst running past its window is refused at the window's end, as lt names it;
+    // where that is a hole, one transfer there lets the RTL refuse it and set STATUS.
+    const bool runaway = row != nullptr && row->words > 1 && attempt.address % 4 == 0 &&
+                         attempt.length > 0 && attempt.length % 4 == 0 &&
+                         (attempt.address - row->offset) / 4 + attempt.length / 4 > row->words;
+    if (shape == tlm::TLM_ADDRESS_ERROR_RESPONSE && runaway && decode(row->end()) == nullptr &&
+        (is_write || attempt.command == tlm::TLM_READ_COMMAND)) {
+      std::uint32_t word = 0;
+      return finish(transfer(attempt, row->end(), is_write, word, 0xF));
+    }
+    return finish(shape);
+  }
+  if (attempt.command == tlm::TLM_IGNORE_COMMAND) return finish(tlm::TLM_OK_RESPONSE);
+  if (attempt.length < 4) {  // one transfer: those lanes, their strobes
+    const unsigned lane = static_cast<unsigned>(attempt.address % 4);
     std::uint32_t word = 0, strobes = 0;
-    for (unsigned b = 0; b < bytes; ++b) {
-      const unsigned index = 4 * t + b;
-      const bool enabled = enables == nullptr || enables[index % enables_length] != 0;
-      if (enabled && lane0 + b < 4) strobes |= 1u << (lane0 + b);
-      if (is_write && lane0 + b < 4) word |= static_cast<std::uint32_t>(data[index]) << (8 * (lane0 + b));
+    for (unsigned b = 0; b < attempt.length; ++b) {
+      strobes |= 1u << (lane + b);
+      if (is_write) word |= static_cast<std::uint32_t>(data[b]) << (8 * (lane + b));
     }
-    std::uint32_t resp;
-    if (is_write) {
-      resp = ip_->write(static_cast<std::uint32_t>(byte_address), word, strobes);
-    } else {
-      resp = ip_->read(static_cast<std::uint32_t>(byte_address), word);
-      if (resp == axi_okay)
-        for (unsigned b = 0; b < bytes && lane0 + b < 4; ++b)
-          if (enables == nullptr || enables[(4 * t + b) % enables_length] != 0)
-            data[4 * t + b] = static_cast<unsigned char>(word >> (8 * (lane0 + b)));
-    }
-    if (resp == axi_decerr) return finish(tlm::TLM_ADDRESS_ERROR_RESPONSE);
-    if (resp == axi_slverr) {
-      std::uint32_t status = 0;
-      ip_->read(static_cast<std::uint32_t>(status_offset), status);
-      return finish(response_for(static_cast<ErrorCause>((status >> 8) & 0xFFu)));
-    }
+    const tlm::tlm_response_status status = transfer(attempt, attempt.address, is_write, word, strobes);
+    if (status == tlm::TLM_OK_RESPONSE && !is_write)
+      for (unsigned b = 0; b < attempt.length; ++b) data[b] = static_cast<unsigned char>(word >> (8 * (lane + b)));
+    return finish(status);
+  }
+  const unsigned words = attempt.length / 4;
+  const auto word_at = [&](unsigned i) {
+    std::uint32_t word = 0;
+    for (unsigned b = 0; b < 4; ++b) word |= static_cast<std::uint32_t>(data[4 * i + b]) << (8 * b);
+    return word;
+  };
+  // All or nothing, as on lt: a word the map refuses is sent alone, so that the RTL
+  // refuses it and sets STATUS, and no other word of the access is written.
+  if (is_write)
+    for (unsigned i = 0; i < words; ++i)
+      if (map_refuses(*row, attempt.address, i, word_at(i))) {
+        std::uint32_t word = word_at(i);
+        const tlm::tlm_response_status status = transfer(attempt, attempt.address + 4ull * i, true, word, 0xF);
+        if (status == tlm::TLM_OK_RESPONSE)
+          SC_REPORT_ERROR("specular/axi", "the RTL took a word the register map refuses");
+        return finish(status);
+      }
+  for (unsigned i = 0; i < words; ++i) {
+    std::uint32_t word = is_write ? word_at(i) : 0;
+    const tlm::tlm_response_status status = transfer(attempt, attempt.address + 4ull * i, is_write, word, 0xF);
+    if (status != tlm::TLM_OK_RESPONSE) return finish(status);
+    if (!is_write)
+      for (unsigned b = 0; b < 4; ++b) data[4 * i + b] = static_cast<unsigned char>(word >> (8 * b));
   }
   return finish(tlm::TLM_OK_RESPONSE);
 }
 
+bool SpecularAxiTarget::map_refuses(const RegisterInfo& row, std::uint64_t address, unsigned index,
+                                    std::uint32_t value) const {
+  // 8 bytes on single registers cover two rows; a window's words are its rows' words.
+  const RegisterInfo* word_row = row.words == 1 ? decode(address + 4ull * index) : &row;
+  if (word_row == nullptr || word_row->access == Access::read_only) return true;
+  if (word_row->reg == Reg::status) return false;  // W1C: any value
+  const std::uint32_t first = static_cast<std::uint32_t>(address - row.offset) / 4;
+  const Reg reg = word_row->reg == Reg::operands ? operand_register(first + index) : word_row->reg;
+  return check_value(reg, value) != ErrorCause::none;
+}
+
+tlm::tlm_response_status SpecularAxiTarget::transfer(const Attempt& attempt, std::uint64_t address,
+                                                     bool is_write, std::uint32_t& word,
+                                                     std::uint32_t strobes) {
+  const auto axi_address = static_cast<std::uint32_t>(address);
+  const std::uint32_t resp = is_write ? ip_->write(axi_address, word, strobes) : ip_->read(axi_address, word);
+  if (resp == axi_okay) return tlm::TLM_OK_RESPONSE;
+  ErrorCause cause = ErrorCause::address;
+  if (resp == axi_slverr) {
+    std::uint32_t status = 0;
+    ip_->read(offset_of(Reg::status), status);
+    cause = static_cast<ErrorCause>((status & status_bits::cause_mask) >> status_bits::cause_shift);
+  }
+  // The first refusal of each cause is logged as lt logs it (the RTL set STATUS and
+  // ERROR_ADDRESS = this transfer's address).
+  const RegisterInfo* row = decode(address & ~std::uint64_t{3});
+  const Why why = cause == ErrorCause::address ? Why{"address", address, address_rule(address)}
+                  : cause == ErrorCause::read_only ? Why{row->name, address, read_only_rule}
+                                                   : Why{row->name, word, describe(cause)};
+  const tlm::tlm_response_status status = resp == axi_decerr ? tlm::TLM_ADDRESS_ERROR_RESPONSE : response_for(cause);
+  report_refusal(status, cause, axi_address, attempt, why);
+  return status;
+}
+
 void SpecularAxiTarget::b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay) {
-  const bool level_before = ip_->done_irq();
   const std::uint64_t start = ip_->cycles();
   std::uint64_t cycles_taken = 0;
   tx.set_response_status(access(tx, cycles_taken));
-  // done_irq: at the cycle the RTL's pin last changed inside this access (a fall at a
-  // START and the rise at its end give the level after the access, as on lt).
-  if (ip_->irq_changed_at() > start || ip_->done_irq() != level_before)
-    rtl_done_irq(ip_->done_irq(), delay + clock_period() * static_cast<double>(ip_->irq_changed_at() - start));
+  // done_irq: each edge of the RTL's pin at its cycle inside this access (a START that
+  // meets done raised: the fall, then the rise at the operation's end, as on lt).
+  for (const auto& [cycle, level] : ip_->take_irq_edges())
+    rtl_done_irq(level, delay + clock_period() * static_cast<double>(cycle - start));
   delay += clock_period() * static_cast<double>(cycles_taken);
   const std::string violation = ip_->take_violation();
   if (!violation.empty()) SC_REPORT_ERROR("specular/axi", violation.c_str());
 }
 
 unsigned int SpecularAxiTarget::transport_dbg(tlm::tlm_generic_payload& tx) {
-  // Debug reads are AXI reads clocked in zero simulated time; debug writes are refused.
+  // Debug reads are AXI reads of mapped words clocked in zero simulated time; debug
+  // writes are refused.
   if (tx.get_command() != tlm::TLM_READ_COMMAND) return 0;
   const unsigned length = tx.get_data_length();
   if (length == 0 || length % 4 != 0 || tx.get_address() % 4 != 0) return 0;
   unsigned char* data = tx.get_data_ptr();
   for (unsigned t = 0; t < length / 4; ++t) {
+    // A hole stops the read before the bus: an AXI read of it would set STATUS.error,
+    // and a debug access has no side effects.
+    const RegisterInfo* row = decode(tx.get_address() + 4ull * t);
+    if (row == nullptr || row->reg == Reg::batch_cos || row->reg == Reg::batch_out) return 4 * t;
     std::uint32_t word = 0;
     if (ip_->read(static_cast<std::uint32_t>(tx.get_address() + 4ull * t), word) != axi_okay)
       return 4 * t;

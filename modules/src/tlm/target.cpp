@@ -123,9 +123,7 @@ tlm::tlm_response_status SpecularTarget::check_access(const tlm::tlm_generic_pay
   row = decode(address & ~std::uint64_t{3});
   if (row == nullptr)
     return refuse(tlm::TLM_ADDRESS_ERROR_RESPONSE, ErrorCause::address, address, attempt,
-                  {"address", address,
-                   address >= map_size ? "the map decodes offsets below 0x8000 (map_size) only"
-                                       : "this offset is a hole in the register map"});
+                  {"address", address, address_rule(address)});
   const bool sub_word = length == 1 || length == 2;
   // Natural alignment: a sub-word inside its word, words and bursts on a word, a
   // doubleword on two registers at a doubleword offset (a 64-bit core's access).
@@ -191,7 +189,7 @@ void SpecularTarget::b_transport(tlm::tlm_generic_payload& tx, sc_time& delay) {
   if (row->access == Access::read_only)
     return tx.set_response_status(refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only,
                                          attempt.address, attempt,
-                                         {row->name, attempt.address, "a read-only register"}));
+                                         {row->name, attempt.address, read_only_rule}));
   tx.set_response_status(
       write(*row, first, words, tx.get_data_ptr(), attempt.address, attempt, delay));
 }
@@ -210,7 +208,7 @@ tlm::tlm_response_status SpecularTarget::sub_word(const RegisterInfo& row, const
   }
   if (row.access == Access::read_only)
     return refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only, attempt.address,
-                  attempt, {row.name, attempt.address, "a read-only register"});
+                  attempt, {row.name, attempt.address, read_only_rule});
   if (!takes_sub_word_writes(row.reg))
     return refuse(tlm::TLM_BURST_ERROR_RESPONSE, ErrorCause::burst, attempt.address, attempt,
                   {row.name, attempt.length,
@@ -253,7 +251,7 @@ tlm::tlm_response_status SpecularTarget::vet_write(const RegisterInfo& row, std:
                                                    std::uint64_t address) {
   if (row.access == Access::read_only)
     return refuse(tlm::TLM_COMMAND_ERROR_RESPONSE, ErrorCause::read_only, address, attempt,
-                  {row.name, address, "a read-only register"});
+                  {row.name, address, read_only_rule});
   if (row.reg == Reg::status) return tlm::TLM_OK_RESPONSE;
   if (const ErrorCause cause = check_value(row.reg, value); cause != ErrorCause::none)
     return refuse(tlm::TLM_GENERIC_ERROR_RESPONSE, cause, address, attempt,
@@ -265,6 +263,11 @@ tlm::tlm_response_status SpecularTarget::vet_write(const RegisterInfo& row, std:
   return tlm::TLM_OK_RESPONSE;
 }
 
+const char* SpecularTarget::address_rule(std::uint64_t address) {
+  return address >= map_size ? "the map decodes offsets below 0x8000 (map_size) only"
+                             : "this offset is a hole in the register map";
+}
+
 tlm::tlm_response_status SpecularTarget::refuse(tlm::tlm_response_status status, ErrorCause cause,
                                                 std::uint64_t address, const Attempt& attempt,
                                                 const Why& why) {
@@ -272,6 +275,13 @@ tlm::tlm_response_status SpecularTarget::refuse(tlm::tlm_response_status status,
   cause_ = cause;
   word(Reg::error_address) = address > 0xFFFFFFFFu ? error_address_beyond_32_bits
                                                    : static_cast<std::uint32_t>(address);
+  report_refusal(status, cause, word(Reg::error_address), attempt, why);
+  return status;
+}
+
+void SpecularTarget::report_refusal(tlm::tlm_response_status status, ErrorCause cause,
+                                    std::uint32_t error_address, const Attempt& attempt,
+                                    const Why& why) {
   // An integrator's first refused access must say why in the log, not only in STATUS
   // (which a refused STATUS read cannot show); once per cause keeps a fuzzer quiet.
   const std::uint32_t bit = 1u << static_cast<unsigned>(cause);
@@ -283,11 +293,10 @@ tlm::tlm_response_status SpecularTarget::refuse(tlm::tlm_response_status status,
       << response_name(status) << ": " << why.field << " = 0x" << why.value << std::dec
       << " (" << why.value << "): " << why.rule << ". STATUS.error is set, cause "
       << to_string(cause) << " (" << static_cast<int>(cause) << "), ERROR_ADDRESS 0x" << std::hex
-      << word(Reg::error_address) << std::dec
+      << error_address << std::dec
       << "; later refusals with this cause set STATUS only (docs/integration.md)";
     SC_REPORT_WARNING(report::tlm_access_refused, s.str().c_str());
   }
-  return status;
 }
 
 // ---- reads -------------------------------------------------------------------------

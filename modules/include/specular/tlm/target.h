@@ -102,23 +102,36 @@ class SpecularTarget : public sc_core::sc_module {
   /// then this level; the base's register file is otherwise unused).
   void rtl_done_irq(bool level, const sc_core::sc_time& delay);
 
- private:
   /// What an access tried, for the refusal's report.
   struct Attempt {
-    tlm::tlm_command command;
-    std::uint64_t address;
-    unsigned length;
+    tlm::tlm_command command;  ///< the payload's command
+    std::uint64_t address;     ///< the payload's address
+    unsigned length;           ///< the payload's data length
   };
   /// Why it is refused: the payload field or register, its value, the rule broken.
   struct Why {
-    const char* field;
-    std::uint64_t value;
-    const char* rule;
+    const char* field;    ///< the payload field or register name
+    std::uint64_t value;  ///< its value
+    const char* rule;     ///< the rule it broke
   };
-  /// The checks of the class comment up to the byte enables; TLM_OK_RESPONSE if the
-  /// access may go on to the command.
+  /// The checks of the class comment up to the byte enables (the payload's shape,
+  /// before any register is touched); TLM_OK_RESPONSE if the access may go on to the
+  /// command. `axi` runs them too: AXI4-Lite cannot carry a payload they refuse.
   tlm::tlm_response_status check_access(const tlm::tlm_generic_payload& tx,
                                         const Attempt& attempt, const RegisterInfo*& row);
+  /// The value check of a write: the ranges of the operand rows, CONTROL's reserved
+  /// bits; ErrorCause::none when `value` is acceptable.
+  ErrorCause check_value(Reg reg, std::uint32_t value) const;
+  /// The rule an address of `cause` address breaks (a hole, or beyond map_size).
+  static const char* address_rule(std::uint64_t address);
+  /// The rule a write to the read-only `row` breaks.
+  static constexpr const char* read_only_rule = "a read-only register";
+  /// Logs the first refusal of each cause (field, value, rule, STATUS's cause and
+  /// `error_address`); later ones with that cause are only counted in STATUS.
+  void report_refusal(tlm::tlm_response_status status, ErrorCause cause,
+                      std::uint32_t error_address, const Attempt& attempt, const Why& why);
+
+ private:
   /// A 1- or 2-byte access inside the word of `row` (byte lane address % 4).
   tlm::tlm_response_status sub_word(const RegisterInfo& row, const Attempt& attempt,
                                     unsigned char* data, sc_core::sc_time& delay);
@@ -137,9 +150,6 @@ class SpecularTarget : public sc_core::sc_module {
   std::uint32_t peek(const RegisterInfo& row, std::uint32_t word) const;
   /// A debug write: storage rows only, range-checked, no side effects.
   bool poke(const RegisterInfo& row, std::uint32_t word, std::uint32_t value);
-  /// The value check of a write: the ranges of the operand rows, CONTROL's reserved
-  /// bits; ErrorCause::none when `value` is acceptable.
-  ErrorCause check_value(Reg reg, std::uint32_t value) const;
   /// Sets STATUS.error, its cause and ERROR_ADDRESS (`address`, or 0xFFFFFFFF above
   /// 32 bits) and reports the first refusal of each cause; returns `status`.
   tlm::tlm_response_status refuse(tlm::tlm_response_status status, ErrorCause cause,

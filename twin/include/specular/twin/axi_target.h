@@ -41,6 +41,11 @@ class SpecularAxiTarget : public SpecularTarget {
 
   /// Bus clock cycles clocked since construction (reset excluded).
   std::uint64_t cycles() const;
+  /// From now on the transactor stalls every channel at random, seeded by `seed`:
+  /// AWVALID, WVALID and ARVALID rise 0-3 cycles late, BREADY and RREADY are low in a
+  /// cycle with `percent` % chance (0: never, the default; above 50 is refused with
+  /// std::invalid_argument). The IP's answers must not change, only the cycles taken.
+  void stall_at_random(std::uint32_t seed, unsigned percent);
 
  private:
   void execute(const Operands& shared, const std::uint32_t* cos, std::size_t count,
@@ -49,6 +54,14 @@ class SpecularAxiTarget : public SpecularTarget {
   unsigned int transport_dbg(tlm::tlm_generic_payload& tx) override;
   /// The whole access as AXI transfers; returns the TLM response.
   tlm::tlm_response_status access(tlm::tlm_generic_payload& tx, std::uint64_t& cycles_taken);
+  /// Whether the map refuses word `index` of a write of `value` at `address` (on `row`):
+  /// a hole, a read-only row, a value out of range.
+  bool map_refuses(const RegisterInfo& row, std::uint64_t address, unsigned index,
+                   std::uint32_t value) const;
+  /// One AXI4-Lite transfer (a read fills `word`); a refusal is logged and answered with
+  /// lt's response for the cause the RTL set.
+  tlm::tlm_response_status transfer(const Attempt& attempt, std::uint64_t address, bool is_write,
+                                    std::uint32_t& word, std::uint32_t strobes);
 
   std::unique_ptr<AxiIpModel> ip_;
 };

@@ -272,7 +272,9 @@ def parse_netlist(path):
                 i += 3
             step = -1 if hi >= lo else 1
             return [(name, k) for k in range(hi, lo + step, step)], i
-        msb, lsb = m.widths.get(name, (0, 0))
+        if name not in m.widths:  # an implicit net (qflow's flat netlist declares none): one bit
+            m.widths[name] = (None, None)
+        msb, lsb = m.widths[name]
         if (msb, lsb) == (None, None):
             return [(name, None)], i
         step = -1 if msb >= lsb else 1

@@ -7,8 +7,9 @@ Two things OpenSTA (Debian 12's) refuses in rc2dly's output, both checked by han
 control unit's layout: a net's internal nodes are written N_K, where SPEF names them
 *N:K (net N's node K: OpenSTA warns "pin N_K not found" and drops the resistor); and the
 name map keeps the BLIF's net names (dff41.d) where blif2Verilog's netlist, which OpenSTA
-reads, has dff41_d. Nodes become *N:K; a mapped name absent from the netlist that is
-present with its dots as underscores takes that spelling. And its header says
+reads, has dff41_d, and a block's bus bit mul6.b[0] where the netlist has mul6_b_0_.
+Nodes become *N:K; a mapped name absent from the netlist that is present with its dots
+as underscores (and a block's bus bit with its brackets as _K_) takes that spelling. And its header says
 *C_UNIT 1 FF where its figures are pF (the pins' *L loads are the Liberty's pF, and a net
 of some 60 um of metal2 and metal3 comes out 0.0044: 4.4 fF, not 0.0044 fF): *C_UNIT 1 PF.
 WIRE_CAP_OUT: each net's wire capacitance (its *D_NET total, pF), "NET PF" lines for
@@ -43,8 +44,13 @@ def main():
                 name = m.group(2)
                 base = re.sub(r"<(\d+)>$", r"[\1]", name)
                 alt = base.replace(".", "_")
+                # a block's bus bit (mul6.b[0]): blif2Verilog flattens it to mul6_b_0_
+                flat = re.sub(r"\[(\d+)\]$", r"_\1_", alt)
                 if base not in words and alt in words:
                     name = alt.replace("[", "<").replace("]", ">") if "<" in m.group(2) else alt
+                    renamed += 1
+                elif base not in words and flat in words:
+                    name = flat
                     renamed += 1
                 line = f"{m.group(1)} {name}"
                 names[m.group(1)] = name

@@ -72,20 +72,20 @@ tlm::tlm_response_status SpecularAxiTarget::access(tlm::tlm_generic_payload& tx,
     return status;
   };
   const Attempt attempt{tx.get_command(), tx.get_address(), tx.get_data_length()};
-  // The payload's shape first, by lt's own checks: AXI4-Lite cannot carry what they
-  // refuse (a misaligned half word, 8 bytes off a doubleword, a streaming width, byte
-  // enables that leave a byte out, an address above 32 bits), so such an access never
-  // reaches the RTL and its STATUS stays as it was.
   const bool is_write = attempt.command == tlm::TLM_WRITE_COMMAND;
   unsigned char* data = tx.get_data_ptr();
+  // A hole (or beyond the map) is the RTL's to refuse: one transfer there, DECERR. The
+  // IP has no batch windows (BATCH_CAPACITY 0, docs/decisions.md): holes too.
   const RegisterInfo* decoded = decode(attempt.address & ~std::uint64_t{3});
   const bool hole = decoded == nullptr || decoded->reg == Reg::batch_cos || decoded->reg == Reg::batch_out;
   if (attempt.address <= 0xFFFFFFFFull && hole && (is_write || attempt.command == tlm::TLM_READ_COMMAND)) {
-    // A hole (or beyond the map) is the RTL's to refuse: one transfer there, DECERR. The
-    // IP has no batch windows (BATCH_CAPACITY 0, docs/decisions.md): holes too.
     std::uint32_t word = 0;
     return finish(transfer(attempt, attempt.address, is_write, word, 0xF));
   }
+  // Then the payload's shape, by lt's own checks: AXI4-Lite cannot carry what they
+  // refuse (a misaligned half word, 8 bytes off a doubleword, a streaming width, byte
+  // enables that leave a byte out, an address above 32 bits), so such an access never
+  // reaches the RTL and its STATUS stays as it was.
   const RegisterInfo* row = nullptr;
   if (const tlm::tlm_response_status shape = check_access(tx, attempt, row); shape != tlm::TLM_OK_RESPONSE) {
     // A burst running past its window is refused at the window's end, as lt names it;
@@ -166,9 +166,10 @@ tlm::tlm_response_status SpecularAxiTarget::transfer(const Attempt& attempt, std
   // The first refusal of each cause is logged as lt logs it (the RTL set STATUS and
   // ERROR_ADDRESS = this transfer's address).
   const RegisterInfo* row = decode(address & ~std::uint64_t{3});
+  const char* field = row != nullptr ? row->name : "address";
   const Why why = cause == ErrorCause::address ? Why{"address", address, address_rule(address)}
-                  : cause == ErrorCause::read_only ? Why{row->name, address, read_only_rule}
-                                                   : Why{row->name, word, describe(cause)};
+                  : cause == ErrorCause::read_only ? Why{field, address, read_only_rule}
+                                                   : Why{field, word, describe(cause)};
   const tlm::tlm_response_status status = resp == axi_decerr ? tlm::TLM_ADDRESS_ERROR_RESPONSE : response_for(cause);
   report_refusal(status, cause, axi_address, attempt, why);
   return status;

@@ -20,14 +20,18 @@ class AxiIpModel;
 /// register file is not used: b_transport turns each access into AXI4-Lite transfers
 /// (4 bytes: one, WSTRB 0xF; 1 and 2 bytes: one with those lanes' strobes; 8 bytes and
 /// window bursts: consecutive single transfers, AXI4-Lite has no bursts), clocks the
-/// model until each response and annotates the cycles x clock_period() on `delay`. A
+/// model until each response and annotates the cycles x clock_period() on `delay`.
+/// A payload AXI4-Lite cannot carry is refused first by `lt`'s own shape checks (the
+/// RTL's STATUS then stays as it was); a write's words are vetted with the map's value
+/// rules first, and a refused one is sent alone (all or nothing, as on `lt`). A
 /// START's B comes after the operation, so the operation ends inside the access as on
 /// `lt`. The IP is idle between accesses (no operation outlives its START's response),
 /// so the time between calls needs no clocking. OKAY -> TLM_OK; DECERR ->
 /// TLM_ADDRESS_ERROR_RESPONSE; SLVERR -> the response `lt` gives for the cause the RTL
-/// set in STATUS (read back over AXI). done_irq follows the RTL's done_irq pin at the
-/// cycle it changed. Debug reads are AXI reads clocked in zero simulated time; debug
-/// writes are refused (0 bytes). `execute` is never called.
+/// set in STATUS (read back over AXI). done_irq follows the RTL's done_irq pin, each
+/// edge at its cycle. Debug reads are AXI reads of mapped words clocked in zero
+/// simulated time; debug writes are refused (0 bytes). `execute` is never called.
+/// docs/rtl_ip.md ("TLM axi target") lists where it differs from `lt`.
 /// Widths other than the defaults are refused with std::invalid_argument (the IP is
 /// verilated at the default widths only).
 class SpecularAxiTarget : public SpecularTarget {

@@ -277,10 +277,19 @@ def check_systemrdl(export, source, scratch):
     cpp = cpp_map(export, scratch)
     with open(os.path.join(source, "ip", "specular_unit.rdl"), encoding="utf-8") as f:
         rdl = systemrdl_subset.parse(f.read())
-    top = rdl.addrmaps.get("specular_unit")
-    fail.check(top is not None, "no addrmap specular_unit")
+    slot = rdl.addrmaps.get("specular_unit")
+    fail.check(slot is not None, "no addrmap specular_unit")
+    if slot is None:
+        return fail.finish("systemrdl")
+    # the IP's slot: one registers block whose stride is the map's size (an array's size
+    # includes its stride: the only way SystemRDL sizes an addrmap past its children)
+    fail.equal(len(slot.children), 1, "specular_unit holds one registers block")
+    top, block = slot.children[0] if slot.children else (None, None)
     if top is None:
         return fail.finish("systemrdl")
+    fail.equal((top.kind, top.type_name), ("addrmap", "specular_unit_registers"), "the registers block's type")
+    fail.equal((block.name, block.dims, block.address), ("registers", (1,), 0), "one block at 0")
+    fail.equal(block.stride, cpp["map_size"], "the block's stride: the map's size, so the slot's")
     fail.equal(top.defaults.get("regwidth"), 32, "default regwidth")
     by_name = {r["name"]: r for r in cpp["registers"]}
     children = top.children

@@ -5,7 +5,8 @@ the test reads the file with this: a tokeniser and a recursive-descent parser ov
   root      := (enum_def | component_def)*
   enum_def  := 'enum' ID '{' (ID '=' number ['{' assignment* '}'] ';')* '}' ';'
   component := ['external'] ('addrmap'|'regfile'|'reg'|'field'|'mem') [ID] '{' item* '}' [instances] ';'
-  item      := component | assignment
+  item      := component | type_instance | assignment
+  type_instance := ID instance ';'     (ID: a root addrmap defined above)
   assignment:= ['default'] ID ['=' value] ';'
   instances := instance (',' instance)*
   instance  := ID ['[' number [':' number] ']'] ['=' number] ['@' number] ['+=' number]
@@ -147,6 +148,7 @@ class RdlFile:
 class Parser:
     def __init__(self, tokens: List[Token]):
         self.tokens, self.pos = tokens, 0
+        self.defined: Dict[str, Component] = {}  # root addrmaps, instantiable by name
 
     def peek(self) -> Token:
         return self.tokens[self.pos]
@@ -207,6 +209,7 @@ class Parser:
                 if instances or not comp.type_name:
                     raise RdlError(f"line {comp.line}: a root addrmap is a named definition")
                 addrmaps[comp.type_name] = comp
+                self.defined[comp.type_name] = comp
             else:
                 self.fail("'enum' or 'addrmap'")
         return RdlFile(enums, addrmaps)
@@ -254,6 +257,10 @@ class Parser:
                     raise RdlError(f"line {child.line}: a nested {child.kind} without an instance")
                 for inst in instances:
                     comp.children.append((child, inst))
+            elif self.peek().kind == "id" and self.peek().text in self.defined:
+                child = self.defined[self.identifier()]  # an instance of a defined addrmap
+                comp.children.append((child, self.instance()))
+                self.expect(";")
             else:
                 key, val, is_default = self.assignment()
                 target = comp.defaults if is_default else comp.properties

@@ -91,14 +91,11 @@ std::string systemrdl_addrmap(const std::string& version) {
     }
     s << "};\n\n";
   }
-  s << "addrmap specular_unit {\n";
-  s << "  name = \"Specular colour intensity device (UA 59965 U), version " << version << "\";\n";
-  // SystemRDL sizes an addrmap by its last child and has no way to state trailing space,
-  // so a compiler elaborates this one to the end of BATCH_OUT; the desc gives the decode.
   const RegisterInfo& last = register_map.back();
-  s << "  desc = " << quoted("The TLM-2.0 target's registers and windows (docs/tlm.md); the IP decodes " +
-                             hex(map_size) + " bytes, of which the rows span " + hex(last.end()) +
-                             " (above: an address error)") << ";\n";
+  s << "addrmap specular_unit_registers {\n";
+  s << "  name = \"Specular colour intensity device (UA 59965 U): registers, version " << version << "\";\n";
+  s << "  desc = " << quoted("The registers and windows of the TLM-2.0 target (docs/tlm.md) and of "
+                             "specular_ip_axi (docs/rtl_ip.md); they span " + hex(last.end()) + " bytes") << ";\n";
   s << "  default regwidth = 32;\n";
   s << "  default accesswidth = 32;\n";
   s << "  addressing = regalign;\n\n";
@@ -131,6 +128,17 @@ std::string systemrdl_addrmap(const std::string& version) {
     }
     s << "\n";
   }
+  s << "};\n\n";
+  // SystemRDL sizes an addrmap by its children and has no property for trailing space;
+  // an array's size includes its stride's padding (SystemRDL 2.0 §5.1.2.5, and so
+  // systemrdl-compiler and IP-XACT), so the slot the IP decodes is one registers block
+  // with the map's size as its stride.
+  s << "addrmap specular_unit {\n";
+  s << "  name = \"Specular colour intensity device (UA 59965 U), version " << version << "\";\n";
+  s << "  desc = " << quoted("The IP decodes " + hex(map_size) + " bytes: its registers (" + hex(last.end()) +
+                             " bytes) and above them an address error. One registers block with a " +
+                             hex(map_size) + "-byte stride gives this map its size") << ";\n";
+  s << "  specular_unit_registers registers[1] @ 0x0 += " << hex(map_size) << ";\n";
   s << "};\n";
   return s.str();
 }

@@ -21,7 +21,9 @@
 //   2 register writes: ACCESSES writes of COS, N, R, G, B in turn (operands of the
 //     vectors, in range: each response OKAY);
 //   3 all: the operations with REG1 and REG9's two passes read too, then the reads, then
-//     the writes, each operand read back after its last write.
+//     the writes, each operand read back after its last write;
+//   4 idle: ACCESSES clocks with the bus idle after one write of each operand (what the
+//     clock alone costs: no clock gating in the IP).
 // The netlist's CONFIG is fixed at the default (patent constants and normalisation,
 // clamp), so the only policy is patent/patent/clamp (CONSTANTS = NORMALISATION =
 // LITERAL = 0). Stops with $fatal (non-zero exit) on the first mismatch.
@@ -269,7 +271,7 @@ module specular_ip_axi_gate_tb;
     if (CONSTANTS != 0 || NORMALISATION != 0 || LITERAL != 0)
       $fatal(1, "specular_ip_axi_gate_tb: policy %0d/%0d/%0d: the mapped IP's CONFIG is fixed at patent/patent/clamp (0/0/0)",
              CONSTANTS, NORMALISATION, LITERAL);
-    if (MODE < 0 || MODE > 3) $fatal(1, "specular_ip_axi_gate_tb: MODE %0d is not 0-3", MODE);
+    if (MODE < 0 || MODE > 4) $fatal(1, "specular_ip_axi_gate_tb: MODE %0d is not 0-4", MODE);
     if (ACCESSES < 1) $fatal(1, "specular_ip_axi_gate_tb: ACCESSES %0d is not at least 1", ACCESSES);
     read_vectors;
     // reset: held low three periods, released at a falling edge
@@ -301,6 +303,13 @@ module specular_ip_axi_gate_tb;
         read(G, last_write[3], "G");
         read(B, last_write[4], "B");
       end
+    end
+    if (MODE == 4) begin
+      write_operands(0);
+      phase_begins("idle");
+      first_edge = edges;
+      for (k = 0; k < ACCESSES; k = k + 1) @(negedge aclk);
+      clocks_per("idle", ACCESSES);
     end
     $display("specular_ip_axi_gate_tb: PASS (MODE %0d: %0d operations, %0d reads, %0d writes at T = %0.3f ns)",
              MODE, (MODE == 0 || MODE == 3) ? count : 0, (MODE == 1 || MODE == 3) ? ACCESSES : 0,

@@ -42,6 +42,8 @@ proc named_paths {} {
   return [list \
     [list results [get_pins {device/reg2/*/CLK device/reg9/*/CLK}] $regs_d \
       "results: the device's register 9 or 2 -> multiplier 39 / ROM 38 -> multipliers 13-15 -> the register block's OUT_R/G/B, one period"] \
+    [list pass2_select [get_pins device/cus/*/CLK] [get_pins device/reg9/*/D] \
+      "pass 2 from select 36: the sequencer's pass2_q -> multiplexers 3, 4 -> ROM 5 -> multiplier 6 -> inverter 7 -> adder 8 -> register 9, one period (the bare synchronous device's worst path)"] \
     [list pass2_loop [get_pins device/reg9/*/CLK] [get_pins device/reg9/*/D] \
       "pass 2 loop: register 9 -> multiplexer 3 -> ROM 5 -> multiplier 6 -> inverter 7 -> adder 8 -> register 9, one period"] \
     [list operands [get_pins regs/*/CLK] [get_pins device/*/*/D] \

@@ -124,8 +124,12 @@ sources=()
 # The Verilog folders of rtl/sources.cmake; the design-space tops include variant_ports.vh.
 for f in "$root"/rtl/{device,primitives,design_space}/*.v; do sources+=("$f"); done
 # The whole IP (rtl/ip/, docs/rtl_ip.md): the register block and the AXI4-Lite top (its
-# assertions file is for simulation and proof only).
-sources+=("$root/rtl/ip/specular_reg_block.v" "$root/rtl/ip/specular_ip_axi.v")
+# assertions file is for simulation and proof only), read only for a top of rtl/ip/:
+# more modules read reorder Yosys's names and so ABC's mapping of every other top
+# (specular_exp2's T_sta moved by 0.3 ns).
+if [[ -f "$root/rtl/ip/$top.v" ]]; then
+  sources+=("$root/rtl/ip/specular_reg_block.v" "$root/rtl/ip/specular_ip_axi.v")
+fi
 front_rest="read_verilog ${sources[*]}
 read_verilog -overwrite $here/silicon/fig2_cells.v
 hierarchy -check -top $top

@@ -6,7 +6,11 @@
 # scripts/silicon/energy.py) on three replays of rtl/tb/specular_ip_axi_gate_tb.v, one per
 # kind, each counted from the testbench's PHASE_BEGIN_NS to its end:
 #   operation: N, R, G, B, COS written, START written (its response comes with the
-#              results), OUT_R, OUT_G, OUT_B read; one result per done_irq rise;
+#              results), OUT_R, OUT_G, OUT_B read; one result per done_irq rise. The
+#              operands are energy.sh's common stream (specular_variant_vectors patent
+#              --count 18+N --seed 1, the expected values specular_tb's through gatesim.sh
+#              --stimulus), counted from the first random one: the figure is the mean over
+#              the N random operands, as the device's in docs/design_space.md;
 #   read:      register reads (ID and the five operands in turn); one per RVALID rise;
 #   write:     register writes (COS, N, R, G, B in turn); one per BVALID rise;
 #   idle:      clocks with the bus idle; one per rising edge of aclk (the clock's own
@@ -20,10 +24,10 @@
 #   --netlist-dir DIR   silicon.sh --top specular_ip_axi's output folder; default: run
 #                       silicon.sh --no-gatesim into OUT_DIR/silicon first
 #   --period NS         the replays' clock period (default 50, energy.sh's common clock)
-#   --operations N      operations (10-5000, default 40): specular_tb's edge-case group
-#                       of 10 and N - 10 random ones (gatesim.sh --groups 1 --random N-10)
+#   --operations N      random operations after the stream's 18 edge cases (1-5000,
+#                       default 300, the synchronous device's row of energy_streams.tsv)
 #   --accesses N        register reads and register writes (1-5000, default 120)
-#   --specular-tb PATH, --counter PATH  as energy.sh
+#   --specular-tb PATH, --vectors-tool PATH, --counter PATH  as energy.sh
 #   --keep-vcd          keep the VCDs
 #
 # OUT_DIR gets energy_ip.json, energy_ip.md and per kind its replay folder and
@@ -39,9 +43,10 @@ fail_args() { echo "energy_ip.sh: $1 (see --help)" >&2; exit 2; }
 top=specular_ip_axi
 netlist_dir=""
 period=50
-operations=40
+operations=300
 accesses=120
 specular_tb="$root/build/testbench/specular_tb"
+vectors_tool="$root/build/tools/variant_vectors/specular_variant_vectors"
 counter="$root/build/tools/vcd_activity/specular_vcd_activity"
 keep_vcd=0
 args=()
@@ -49,12 +54,13 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --keep-vcd) keep_vcd=1; shift ;;
-    --netlist-dir|--period|--operations|--accesses|--specular-tb|--counter)
+    --netlist-dir|--period|--operations|--accesses|--specular-tb|--vectors-tool|--counter)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --netlist-dir) netlist_dir="$2" ;; --period) period="$2" ;;
         --operations) operations="$2" ;; --accesses) accesses="$2" ;;
         --specular-tb) specular_tb="$2" ;; --counter) counter="$2" ;;
+        --vectors-tool) vectors_tool="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -65,8 +71,8 @@ done
 number='^[0-9]+([.][0-9]+)?$'
 [[ "$period" =~ $number ]] && (( $(echo "$period >= 1 && $period <= 1000" | bc) )) \
   || fail_args "--period '$period' is not a period in ns from 1 to 1000"
-[[ "$operations" =~ ^[0-9]{1,4}$ ]] && (( 10#$operations >= 10 && 10#$operations <= 5000 )) \
-  || fail_args "--operations '$operations' is not a count from 10 to 5000"
+[[ "$operations" =~ ^[0-9]{1,4}$ ]] && (( 10#$operations >= 1 && 10#$operations <= 5000 )) \
+  || fail_args "--operations '$operations' is not a count from 1 to 5000"
 [[ "$accesses" =~ ^[0-9]{1,4}$ ]] && (( 10#$accesses >= 1 && 10#$accesses <= 5000 )) \
   || fail_args "--accesses '$accesses' is not a count from 1 to 5000"
 operations=$((10#$operations)); accesses=$((10#$accesses))
@@ -85,6 +91,10 @@ for f in mapped.v device.sdf rom_macros.lib rom_model.json; do
   [[ -f "$netlist_dir/$f" ]] || fail_args "'$netlist_dir/$f' not found: run scripts/silicon.sh --top $top first"
 done
 source "$top_dir/gatesim.conf"   # TB_TOP
+[[ -x "$vectors_tool" ]] || fail_args "specular_variant_vectors not found at '$vectors_tool' (cmake --build build --target specular_variant_vectors, or --vectors-tool PATH)"
+# energy.sh's common stream: 18 edge cases, then the random operands
+"$vectors_tool" patent --count $((18 + operations)) --seed 1 --out "$out/stream.txt" > "$out/stream.log" 2>&1 \
+  || { echo "energy_ip.sh: writing the common stream failed; see $out/stream.log" >&2; exit 1; }
 
 # ---- slews: OpenSTA at the period, the top's own SDC (as energy.sh) -----------------
 /usr/bin/python3 "$here/silicon/energy.py" sta-slews "$out/slews_dump.tcl" "$out/slews.txt"
@@ -110,8 +120,8 @@ for spec in "${kinds[@]}"; do
   read -r kind mode strobe expected <<< "$spec"
   started=$SECONDS
   if ! bash "$here/gatesim.sh" --top "$top" --netlist-dir "$netlist_dir" --quiet \
-       --specular-tb "$specular_tb" --groups 1 --random $((operations - 10)) \
-       --tb-param "MODE=$mode" --tb-param "ACCESSES=$accesses" \
+       --specular-tb "$specular_tb" --stimulus "$out/stream.txt" \
+       --tb-param "MODE=$mode" --tb-param "ACCESSES=$accesses" --tb-param MEASURE_FROM=18 \
        --vcd "$out/$kind/activity.vcd" "$period" "$out/$kind" "$rom_dir" > "$out/$kind.log" 2>&1; then
     echo "energy_ip.sh: the $kind replay failed at $period ns; see $out/$kind.log" >&2
     exit 1
@@ -171,7 +181,7 @@ for k, r in rows.items():
     lines.append(f"| {k} | {r['count']} | {r['clocks_per_access']:g} | {f(r['internal_pj'])} | "
                  f"{f(r['switching_pj'])} | {f(r['rom_pj'])} | {f(r['dynamic_pj'])} | "
                  f"{f(r['leakage_pj'])} | **{f(r['total_pj'])}** | {f(r['beyond_idle_clocks_pj'])} | {r['toggles']:.0f} |")
-lines += ["", "An operation: five operand writes, START (its response comes with the results) and "
+lines += ["", "An operation (the mean over the common stream's random operands, after its 18 edge cases): five operand writes, START (its response comes with the results) and "
           "three result reads. A read: ID or an operand register. A write: an operand register. "
           "Idle: one clock with the bus idle. Beyond its clocks idle: the access's total less its "
           "clocks times the idle clock's."]

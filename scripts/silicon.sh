@@ -6,7 +6,8 @@
 #
 #   scripts/silicon.sh [--top NAME] [--no-gatesim] [--no-hazards] OUT_DIR [ROM_DIR]
 #
-#   --top NAME    the top module (default specular_device); its own pieces (SDC, named
+#   --top NAME    the top module (default specular_device; specular_device_sync, or
+#                 specular_ip_axi, the whole IP of rtl/ip/); its own pieces (SDC, named
 #                 paths, the control unit's expected cells, the testbench timing) live in
 #                 scripts/silicon/NAME/.
 #   --no-gatesim  skip the T_sim bisection and the hazards (T_sim is then reported as
@@ -36,7 +37,7 @@ root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 
 usage() {
-  sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,24p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 top=specular_device

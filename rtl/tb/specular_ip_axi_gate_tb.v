@@ -11,8 +11,9 @@
 //     delay 0, one period);
 //   - READY for B and R is held high, AW and W go together: the bus's quickest master.
 // MODE picks what it runs, for the T_sim bisection (3) and for the energy of each kind of
-// access (scripts/energy_ip.sh, 0-2); `PHASE_BEGIN_NS` in the log is when the measured
-// part starts, and the run ends as its last access ends:
+// access (scripts/energy_ip.sh, 0-2, 4); `PHASE_BEGIN_NS` in the log is when the measured
+// part starts (in MODE 0 before operation MEASURE_FROM: energy_ip.sh skips the stream's
+// edge cases), and the run ends as its last access ends:
 //   0 operations: per vector of VECTORS (specular_tb --format csv: Core's bits) N, R, G,
 //     B, COS written, START written (its response comes with the results), OUT_R, OUT_G,
 //     OUT_B read and compared;
@@ -40,6 +41,7 @@ module specular_ip_axi_gate_tb;
   parameter real T = 20.0;            // clock period (ns)
   parameter MODE = 3;
   parameter ACCESSES = 60;
+  parameter MEASURE_FROM = 0;         // MODE 0: the operation PHASE_BEGIN_NS is printed before
   parameter RESET_EVERY = 0;          // gatesim.sh and energy.sh set it for the device: unused
   parameter MAX_VECTORS = 8192;
 
@@ -279,10 +281,16 @@ module specular_ip_axi_gate_tb;
     aresetn = 1'b1;
     @(negedge aclk);
     if (MODE == 0 || MODE == 3) begin
-      if (MODE == 0) phase_begins("operations");
-      first_edge = edges;
-      for (i = 0; i < count; i = i + 1) operation(i, MODE == 3);
-      clocks_per("operation", count);
+      if (MEASURE_FROM >= count)
+        $fatal(1, "specular_ip_axi_gate_tb: MEASURE_FROM %0d is not below the %0d vectors", MEASURE_FROM, count);
+      for (i = 0; i < count; i = i + 1) begin
+        if (i == MEASURE_FROM) begin
+          if (MODE == 0) phase_begins("operations");
+          first_edge = edges;
+        end
+        operation(i, MODE == 3);
+      end
+      clocks_per("operation", count - MEASURE_FROM);
     end
     if (MODE == 1 || MODE == 3) begin
       write_operands(0);

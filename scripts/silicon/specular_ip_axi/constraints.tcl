@@ -6,13 +6,15 @@
 #     the device's) is on its rising edge. No generated or gated clock.
 #   - AXI inputs (every VALID, READY, address, data, strobe, the PROT fields) come from
 #     the master's flip-flops on the same clock through the interconnect: input delay
-#     T/2, half the period for the master and the wires, half for the IP. Why half: the device's own inputs have 3T/4 (a quarter period left,
-#     scripts/silicon/specular_device_sync/), but there they only load registers; here
-#     ARADDR goes through the register block's read decoder into RDATA's flip-flops in
-#     the same cycle, and a quarter period would make that decoder, not the device, set
-#     T_sta. A half period is the usual budget of an AXI slave's SDC when nothing is
-#     known of the interconnect; the gate-level testbench keeps it (inputs change at the
-#     falling edge, rtl/tb/specular_ip_axi_gate_tb.v).
+#     T/2, half the period for the master and the wires, half for the IP. Why half: the
+#     device's own inputs have 3T/4 (a quarter period left, scripts/silicon/
+#     specular_device_sync/), but there they only load registers; here ARVALID and
+#     ARADDR go through the register block's read decoder and the read handshake's
+#     fan-out in the same cycle, and a quarter period would make that path, not the
+#     device, set T_sta (39.39 ns: ARVALID -> do_read -> STATUS.CAUSE). A half period is
+#     the usual budget of an AXI slave's SDC when nothing is known of the interconnect;
+#     the gate-level testbench keeps it (inputs change at the falling edge,
+#     rtl/tb/specular_ip_axi_gate_tb.v).
 #   - aresetn (synchronous, as AXI's ARESETn is released) comes straight from the
 #     system's reset synchroniser, a flip-flop on aclk: input delay 0, one whole period.
 #     It fans out unbuffered to every flip-flop of the register block and the AXI top

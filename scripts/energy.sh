@@ -118,9 +118,10 @@ fi
 # a result, as in a variant's testbench.
 ENERGY_RESULTS=()
 ENERGY_LEAD_RESULTS=0
+ENERGY_INSTEAD=""
 source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top); results before the stream's
 random_from=$((18 + ENERGY_LEAD_RESULTS))
-[[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)"
+[[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)${ENERGY_INSTEAD:+; $ENERGY_INSTEAD}"
 strobe=("${ENERGY_RESULTS[@]}")
 if [[ $variant -eq 1 ]]; then
   vec_opts=(--random "$random")

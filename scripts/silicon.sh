@@ -6,7 +6,8 @@
 #
 #   scripts/silicon.sh [--top NAME] [--no-gatesim] [--no-hazards] OUT_DIR [ROM_DIR]
 #
-#   --top NAME    the top module (default specular_device); its own pieces (SDC, named
+#   --top NAME    the top module (default specular_device; specular_device_sync, or
+#                 specular_ip_axi, the whole IP of rtl/ip/); its own pieces (SDC, named
 #                 paths, the control unit's expected cells, the testbench timing) live in
 #                 scripts/silicon/NAME/.
 #   --no-gatesim  skip the T_sim bisection and the hazards (T_sim is then reported as
@@ -36,7 +37,7 @@ root="$(dirname "$here")"
 OSU018="${SPECULAR_OSU018_DIR:-/usr/share/qflow/tech/osu018}"
 
 usage() {
-  sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
+  sed -n '2,24p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'
 }
 
 top=specular_device
@@ -123,6 +124,13 @@ t0=$(seconds)
 sources=()
 # The Verilog folders of rtl/sources.cmake; the design-space tops include variant_ports.vh.
 for f in "$root"/rtl/{device,primitives,design_space}/*.v; do sources+=("$f"); done
+# The whole IP (rtl/ip/, docs/rtl_ip.md): the register block and the AXI4-Lite top (its
+# assertions file is for simulation and proof only), read only for a top of rtl/ip/:
+# more modules read reorder Yosys's names and so ABC's mapping of every other top
+# (specular_exp2's T_sta moved by 0.3 ns).
+if [[ -f "$root/rtl/ip/$top.v" ]]; then
+  sources+=("$root/rtl/ip/specular_reg_block.v" "$root/rtl/ip/specular_ip_axi.v")
+fi
 front_rest="read_verilog ${sources[*]}
 read_verilog -overwrite $here/silicon/fig2_cells.v
 hierarchy -check -top $top
@@ -161,6 +169,10 @@ if ! (cd "$rom_dir" && yosys -q -l "$out/yosys.log" -p "$script" >/dev/null 2>&1
   echo "silicon.sh: yosys failed; see $out/yosys.log" >&2
   exit 1
 fi
+# OpenSTA 2.0.17 stops reading a module at an assignment to a concatenation (Yosys's
+# aliases of merged flip-flops): one assignment per bit (silicon/netlist_assigns.py).
+/usr/bin/python3 "$here/silicon/netlist_assigns.py" "$out/mapped.v" > /dev/null \
+  || { echo "silicon.sh: netlist_assigns.py failed on $out/mapped.v" >&2; exit 1; }
 if grep -q '\$mem' "$out/mapped.v"; then
   echo "silicon.sh: a memory was left unmapped (not a ROM macro); see $out/mapped.v" >&2
   exit 1
@@ -177,7 +189,10 @@ t1=$(seconds)
   echo "set out {$out}"
   echo "source {$here/silicon/sta.tcl}"
 } > "$out/sta_run.tcl"
-if ! sta -no_splash -exit "$out/sta_run.tcl" > "$out/sta.log" 2>&1 || ! grep -q t_sta_ns "$out/sta_summary.txt" 2>/dev/null; then
+# An error in the log (a netlist line OpenSTA could not read) fails the step: its
+# timing would miss what it skipped.
+if ! sta -no_splash -exit "$out/sta_run.tcl" > "$out/sta.log" 2>&1 || ! grep -q t_sta_ns "$out/sta_summary.txt" 2>/dev/null \
+   || grep -q '^Error' "$out/sta.log"; then
   echo "silicon.sh: sta failed; see $out/sta.log" >&2
   exit 1
 fi

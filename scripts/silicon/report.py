@@ -219,6 +219,23 @@ def main():
     paths = {}
     for name, _, _ in spec["paths"]:
         paths[name] = parse_path(f"{out}/path_{name}.txt")
+    # The worst path of the whole top (sta_worst_paths.txt's first), named by its ends.
+    worst = None
+    worst_text = read(f"{out}/sta_worst_paths.txt") if os.path.exists(f"{out}/sta_worst_paths.txt") else ""
+    m = re.search(r"Startpoint: (\S+).*?\nEndpoint: (\S+).*?([\d.-]+)\s+data arrival time", worst_text, re.S)
+    if m:
+        worst = {"startpoint": m.group(1), "endpoint": m.group(2), "arrival_ns": float(m.group(3))}
+    # Shares of the area (top.json "shares", e.g. the whole IP's bus, register block and
+    # device): each a list of blocks' modules, the ROM macros apart.
+    shares = []
+    for name, labels in spec.get("shares", []):
+        missing = [label for label in labels if label not in modules]
+        if missing:
+            raise SystemExit(f"report.py: share '{name}' names modules not in stat.txt: {missing}")
+        cells = sum(v * instances.get(label, 1) for label in labels
+                    for c, v in modules[label]["cells"].items() if not c.endswith("_MACRO"))
+        area = sum(own_area(label) * instances.get(label, 1) for label in labels)
+        shares.append({"name": name, "cells": cells, "area_um2": round(area, 1)})
     t_sim = None
     tsim_file = f"{out}/gatesim/tsim.txt"
     if os.path.exists(tsim_file):
@@ -279,6 +296,8 @@ def main():
         "gatesim_replay_1_1_t_sim": gate_replay,
         "paths": {name: {k: p[k] for k in ("delay_ns", "slack_ns", "gate_levels") if k in p}
                   for name, p in paths.items()},
+        "worst_path": worst,
+        "shares": shares,
         "times_s": {k: float(v) for k, v in times.items()},
         "hazards": hazard_keys(hazards),
     }
@@ -318,6 +337,14 @@ def main():
     w(f"| die estimate (cells at {UTILISATION:.0%} utilisation, macros + {MACRO_HALO - 1:.0%} halo) | "
       f"{fmt(die)} ({die / 1e6:.2f} mm^2) |")
     w(f"| die estimate, one ROM 38 bank | {fmt(die_one_bank)} ({die_one_bank / 1e6:.2f} mm^2) |\n")
+    if shares:
+        w("## Shares of the area\n")
+        w("| part | cells | area (um^2) | of the logic | of logic and ROM macros |")
+        w("|---|---:|---:|---:|---:|")
+        for sh in shares:
+            w(f"| {sh['name']} | {fmt(sh['cells'])} | {fmt(sh['area_um2'])} | "
+              f"{100 * sh['area_um2'] / logic_area:.1f} % | {100 * sh['area_um2'] / total:.1f} % |")
+        w(f"| ROM macros | | {fmt(macro_area)} | | {100 * macro_area / total:.1f} % |\n")
     w("## Cells and flip-flops\n")
     w("| cell | count |")
     w("|---|---:|")
@@ -347,6 +374,9 @@ def main():
         p = paths[name]
         if p["found"]:
             w(f"- {p['sentence']}; from {p['startpoint']} to {p['endpoint']} (path_{name}.txt)")
+    if worst:
+        w(f"- worst path of the top: from {worst['startpoint']} to {worst['endpoint']}, "
+          f"arrival {worst['arrival_ns']:.3f} ns (sta_worst_paths.txt)")
     w("")
     w("## Results per second\n")
     w(f"| at T_sta = {t_sta:.2f} ns | results/s |")

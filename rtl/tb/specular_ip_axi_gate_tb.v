@@ -1,0 +1,334 @@
+// Gate-level testbench of the whole IP, specular_ip_axi (scripts/silicon.sh --top
+// specular_ip_axi, scripts/gatesim.sh, scripts/energy_ip.sh; docs/silicon.md): an
+// AXI4-Lite master on a clock of period T that drives the mapped netlist with the SDF
+// (`define GATE_LEVEL) or the RTL, and checks every response. Its own file, beside
+// specular_ip_axi_tb.v (the RTL tests' master, with random stalls and a fixed clock):
+// here the master keeps the bus's timing of the top's SDC
+// (scripts/silicon/specular_ip_axi/constraints.tcl):
+//   - inputs change at the falling edge of aclk, half a period before the rising edge that
+//     takes them (the SDC's input delay T/2);
+//   - outputs are read just before the next rising edge (T/64 before it: the SDC's output
+//     delay 0, one period);
+//   - READY for B and R is held high, AW and W go together: the bus's quickest master.
+// MODE picks what it runs, for the T_sim bisection (3) and for the energy of each kind of
+// access (scripts/energy_ip.sh, 0-2, 4); `PHASE_BEGIN_NS` in the log is when the measured
+// part starts (in MODE 0 before operation MEASURE_FROM: energy_ip.sh skips the stream's
+// edge cases), and the run ends as its last access ends:
+//   0 operations: per vector of VECTORS (specular_tb --format csv: Core's bits) N, R, G,
+//     B, COS written, START written (its response comes with the results), OUT_R, OUT_G,
+//     OUT_B read and compared;
+//   1 register reads: ACCESSES reads of ID, COS, N, R, G, B in turn after one write of
+//     each operand (ID the map's constant 0x00059965, the operands as written);
+//   2 register writes: ACCESSES writes of COS, N, R, G, B in turn (operands of the
+//     vectors, in range: each response OKAY);
+//   3 all: the operations with REG1 and REG9's two passes read too, then the reads, then
+//     the writes, each operand read back after its last write;
+//   4 idle: ACCESSES clocks with the bus idle after one write of each operand (what the
+//     clock alone costs: no clock gating in the IP).
+// The netlist's CONFIG is fixed at the default (patent constants and normalisation,
+// clamp), so the only policy is patent/patent/clamp (CONSTANTS = NORMALISATION =
+// LITERAL = 0). Stops with $fatal (non-zero exit) on the first mismatch.
+`default_nettype none
+`timescale 1ns / 1ps
+
+module specular_ip_axi_gate_tb;
+  parameter VECTORS = "vectors.csv";
+  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
+  parameter PINS_IMAGE = "pins.hex";  // gatesim.sh passes it to every device top: unused
+  parameter LITERAL = 0;
+  parameter CONSTANTS = 0;
+  parameter NORMALISATION = 0;
+  parameter real T = 20.0;            // clock period (ns)
+  parameter MODE = 3;
+  parameter ACCESSES = 60;
+  parameter MEASURE_FROM = 0;         // MODE 0: the operation PHASE_BEGIN_NS is printed before
+  parameter RESET_EVERY = 0;          // gatesim.sh and energy.sh set it for the device: unused
+  parameter MAX_VECTORS = 8192;
+
+  localparam [1:0] OKAY = 2'b00;
+  localparam [31:0] ID = 32'h000, CONTROL = 32'h010;
+  localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;
+  localparam [31:0] OUT_R = 32'h040, REG1 = 32'h050, REG9_PASS1_LO = 32'h054;
+  localparam [31:0] ID_VALUE = 32'h00059965;   // docs/tlm.md's register table
+
+  reg aclk = 1'b0, aresetn = 1'b0;
+  always #(T / 2) aclk = ~aclk;   // rising edges at T/2 + k T, falling at k T
+
+  reg         awvalid = 1'b0, wvalid = 1'b0, bready = 1'b0, arvalid = 1'b0, rready = 1'b0;
+  reg  [31:0] awaddr = 32'd0, wdata = 32'd0, araddr = 32'd0;
+  reg  [3:0]  wstrb = 4'd0;
+  wire        awready, wready, bvalid, arready, rvalid, done_irq;
+  wire [1:0]  bresp, rresp;
+  wire [31:0] rdata;
+
+`ifdef GATE_LEVEL
+  initial $sdf_annotate(`SDF_FILE, dut);
+  specular_ip_axi dut (
+`else
+  specular_ip_axi #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
+`endif
+    .aclk(aclk), .aresetn(aresetn),
+    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
+    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
+    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
+    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
+    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
+    .done_irq(done_irq));
+
+  // ---- the master: one access at a time, on the SDC's timing ----
+  // sample: the outputs just before the rising edge (the caller is at a falling edge)
+  task sample;
+    #(T / 2 - T / 64);
+  endtask
+
+  task write;
+    input [31:0] address;
+    input [31:0] data;
+    reg aw_done, w_done, b_done;
+    integer k;
+    begin
+      awaddr = address; awvalid = 1'b1;
+      wdata = data; wstrb = 4'b1111; wvalid = 1'b1;
+      bready = 1'b1;
+      aw_done = 1'b0; w_done = 1'b0; b_done = 1'b0;
+      k = 0;
+      while (!b_done) begin
+        sample;
+        if (awvalid && awready === 1'b1) aw_done = 1'b1;
+        if (wvalid && wready === 1'b1) w_done = 1'b1;
+        if (bvalid === 1'b1) begin
+          b_done = 1'b1;
+          if (!aw_done || !w_done)
+            $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h: B before AW and W were taken at %0t",
+                   address, $realtime);
+          if (bresp !== OKAY)
+            $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h of 0x%08h: response %b, expected OKAY at %0t",
+                   address, data, bresp, $realtime);
+        end
+        @(negedge aclk);
+        if (aw_done) awvalid = 1'b0;
+        if (w_done) wvalid = 1'b0;
+        k = k + 1;
+        if (k > 50) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h: no response in 50 periods", address);
+      end
+      bready = 1'b0;
+    end
+  endtask
+
+  task read;
+    input [31:0] address;
+    input [31:0] expected;
+    input [8*16-1:0] what;
+    reg ar_done, r_done;
+    integer k;
+    begin
+      araddr = address; arvalid = 1'b1;
+      rready = 1'b1;
+      ar_done = 1'b0; r_done = 1'b0;
+      k = 0;
+      while (!r_done) begin
+        sample;
+        if (arvalid && arready === 1'b1) ar_done = 1'b1;
+        if (rvalid === 1'b1 && ar_done) begin
+          r_done = 1'b1;
+          if (rresp !== OKAY || rdata !== expected)
+            $fatal(1, "specular_ip_axi_gate_tb: MISMATCH read 0x%08h (%0s): 0x%08h response %b, expected 0x%08h OKAY at %0t",
+                   address, what, rdata, rresp, expected, $realtime);
+        end
+        @(negedge aclk);
+        if (ar_done) arvalid = 1'b0;
+        k = k + 1;
+        if (k > 50) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH read 0x%08h: no data in 50 periods", address);
+      end
+      rready = 1'b0;
+    end
+  endtask
+
+  // ---- vectors (specular_tb --format csv: Core's bits, as specular_ip_axi_tb.v reads them) ----
+  integer v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1], v_b [0:MAX_VECTORS-1];
+  reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
+             v_out26 [0:MAX_VECTORS-1];
+  reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
+  integer count;
+  task read_vectors;
+    integer fd, fields, n, r, g, b, pass;
+    real cos, skip;
+    reg [63:0] h1, h2, h3, h4, h5, h6;
+    reg [8*2048-1:0] header;
+    begin
+      fd = $fopen(VECTORS, "r");
+      if (fd == 0) $fatal(1, "specular_ip_axi_gate_tb: cannot read %0s", VECTORS);
+      fields = $fgets(header, fd);
+      count = 0;
+      fields = 25;
+      while (!$feof(fd) && fields == 25) begin
+        fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
+                              "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
+                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
+                         skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
+        if (fields == 25) begin
+          if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_gate_tb: more than %0d vectors", MAX_VECTORS);
+          v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
+          v_reg1[count] = h1[31:0];
+          // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
+          v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
+          v_pass2[count] = {{27{h3[36]}}, h3[36:0]};
+          v_out24[count] = h4[31:0]; v_out25[count] = h5[31:0]; v_out26[count] = h6[31:0];
+          count = count + 1;
+        end else if (fields > 0) begin
+          $fatal(1, "specular_ip_axi_gate_tb: %0s line %0d: %0d of 25 fields", VECTORS, count + 2, fields);
+        end
+      end
+      $fclose(fd);
+      if (count == 0) $fatal(1, "specular_ip_axi_gate_tb: no vectors in %0s", VECTORS);
+    end
+  endtask
+
+  // ---- the three kinds of access ----
+  task operation;
+    input integer i;
+    input integer all_reads;
+    begin
+      write(N, v_n[i]);
+      write(R, v_r[i]);
+      write(G, v_g[i]);
+      write(B, v_b[i]);
+      write(COS, v_reg1[i]);
+      write(CONTROL, 32'h1);   // START: its response comes with the results
+      if (done_irq !== 1'b1) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH vector %0d: done_irq low after START's response", i);
+      read(OUT_R, v_out24[i], "OUT_R");
+      read(OUT_R + 4, v_out25[i], "OUT_G");
+      read(OUT_R + 8, v_out26[i], "OUT_B");
+      if (all_reads) begin
+        read(REG1, v_reg1[i], "REG1");
+        read(REG9_PASS1_LO, v_pass1[i][31:0], "REG9_PASS1_LO");
+        read(REG9_PASS1_LO + 4, v_pass1[i][63:32], "REG9_PASS1_HI");
+        read(REG9_PASS1_LO + 8, v_pass2[i][31:0], "REG9_PASS2_LO");
+        read(REG9_PASS1_LO + 12, v_pass2[i][63:32], "REG9_PASS2_HI");
+      end
+    end
+  endtask
+
+  // register reads: ID and the five operands in turn (the operands of vector 0, written first)
+  task register_reads;
+    integer k;
+    begin
+      for (k = 0; k < ACCESSES; k = k + 1)
+        case (k % 6)
+          0: read(ID, ID_VALUE, "ID");
+          1: read(COS, v_reg1[0], "COS");
+          2: read(N, v_n[0], "N");
+          3: read(R, v_r[0], "R");
+          4: read(G, v_g[0], "G");
+          default: read(B, v_b[0], "B");
+        endcase
+    end
+  endtask
+  task write_operands;
+    input integer i;
+    begin
+      write(COS, v_reg1[i]);
+      write(N, v_n[i]);
+      write(R, v_r[i]);
+      write(G, v_g[i]);
+      write(B, v_b[i]);
+    end
+  endtask
+
+  // register writes: COS, N, R, G, B in turn, the operands of vector k / 5
+  integer last_write [0:4];
+  task register_writes;
+    integer k, i;
+    begin
+      for (k = 0; k < ACCESSES; k = k + 1) begin
+        i = (k / 5) % count;
+        case (k % 5)
+          0: begin write(COS, v_reg1[i]); last_write[0] = v_reg1[i]; end
+          1: begin write(N, v_n[i]); last_write[1] = v_n[i]; end
+          2: begin write(R, v_r[i]); last_write[2] = v_r[i]; end
+          3: begin write(G, v_g[i]); last_write[3] = v_g[i]; end
+          default: begin write(B, v_b[i]); last_write[4] = v_b[i]; end
+        endcase
+      end
+    end
+  endtask
+
+  task phase_begins;
+    input [8*12-1:0] what;
+    $display("PHASE_BEGIN_NS %0.3f %0s", $realtime, what);
+  endtask
+
+  // rising edges of aclk, for the clocks an operation, a read and a write take
+  integer edges = 0;
+  always @(posedge aclk) edges = edges + 1;
+  integer first_edge;
+  task clocks_per;
+    input [8*12-1:0] what;
+    input integer accesses;
+    $display("clocks_per_%0s %0.2f", what, (edges - first_edge) * 1.0 / accesses);
+  endtask
+
+  integer i, k;
+  initial begin
+    if (CONSTANTS != 0 || NORMALISATION != 0 || LITERAL != 0)
+      $fatal(1, "specular_ip_axi_gate_tb: policy %0d/%0d/%0d: the mapped IP's CONFIG is fixed at patent/patent/clamp (0/0/0)",
+             CONSTANTS, NORMALISATION, LITERAL);
+    if (MODE < 0 || MODE > 4) $fatal(1, "specular_ip_axi_gate_tb: MODE %0d is not 0-4", MODE);
+    if (ACCESSES < 1) $fatal(1, "specular_ip_axi_gate_tb: ACCESSES %0d is not at least 1", ACCESSES);
+    read_vectors;
+    // reset: held low three periods, released at a falling edge
+    for (k = 0; k < 3; k = k + 1) @(negedge aclk);
+    aresetn = 1'b1;
+    @(negedge aclk);
+    if (MODE == 0 || MODE == 3) begin
+      if (MEASURE_FROM >= count)
+        $fatal(1, "specular_ip_axi_gate_tb: MEASURE_FROM %0d is not below the %0d vectors", MEASURE_FROM, count);
+      for (i = 0; i < count; i = i + 1) begin
+        if (i == MEASURE_FROM) begin
+          if (MODE == 0) phase_begins("operations");
+          first_edge = edges;
+        end
+        operation(i, MODE == 3);
+      end
+      clocks_per("operation", count - MEASURE_FROM);
+    end
+    if (MODE == 1 || MODE == 3) begin
+      write_operands(0);
+      if (MODE == 1) phase_begins("reads");
+      first_edge = edges;
+      register_reads;
+      clocks_per("read", ACCESSES);
+    end
+    if (MODE == 2 || MODE == 3) begin
+      if (MODE == 2) phase_begins("writes");
+      first_edge = edges;
+      register_writes;
+      clocks_per("write", ACCESSES);
+      if (MODE == 3) begin
+        read(COS, last_write[0], "COS");
+        read(N, last_write[1], "N");
+        read(R, last_write[2], "R");
+        read(G, last_write[3], "G");
+        read(B, last_write[4], "B");
+      end
+    end
+    if (MODE == 4) begin
+      write_operands(0);
+      phase_begins("idle");
+      first_edge = edges;
+      for (k = 0; k < ACCESSES; k = k + 1) @(negedge aclk);
+      clocks_per("idle", ACCESSES);
+    end
+    $display("specular_ip_axi_gate_tb: PASS (MODE %0d: %0d operations, %0d reads, %0d writes at T = %0.3f ns)",
+             MODE, (MODE == 0 || MODE == 3) ? count : 0, (MODE == 1 || MODE == 3) ? ACCESSES : 0,
+             (MODE == 2 || MODE == 3) ? ACCESSES : 0, T);
+    $finish;
+  end
+
+  initial begin
+    #(T * (60 * MAX_VECTORS + 200 * ACCESSES + 100));
+    $fatal(1, "specular_ip_axi_gate_tb: watchdog: no end");
+  end
+endmodule
+
+`default_nettype wire

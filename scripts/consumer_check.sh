@@ -69,14 +69,18 @@ grep -q '^\./lib[^/]*/libspecular_core\.a$' "$work/files.txt"  # SpecularUnit::c
 grep -q '^\./share/SpecularUnit/ip/specular_unit\.xml$' "$work/files.txt"  # IP-XACT (docs/ipxact.md)
 grep -q '^\./share/SpecularUnit/firmware_rv32/example_expected\.h$' "$work/files.txt"  # the example (issue 47)
 grep -q '^\./share/SpecularUnit/toolchains/rv32imac-picolibc\.cmake$' "$work/files.txt"
-# Every file the installed IP-XACT component names (relative to it) is installed; the
+# Every file the installed IP-XACT components name (relative to them) is installed; the
 # twin's headers and libraries only in a build with the RTL twin
-while read -r named; do
-  # (and the ROM images, which a build without it does not write: ip/CMakeLists.txt)
-  if [[ $rtl != ON && ( $named == *twin* || $named == *rtl_models* || $named == *.hex ) ]]; then continue; fi
-  [[ -e "$work/prefix/share/SpecularUnit/ip/$named" ]] ||
-    { echo "consumer_check: FAIL: specular_unit.xml names $named, which is not installed" >&2; exit 1; }
-done < <(sed -n 's|.*<ipxact:[a-z]*>\(\.\./[^<]*\)<.*|\1|p' "$work/prefix/share/SpecularUnit/ip/specular_unit.xml")
+for component in specular_unit specular_device_sync specular_ip_axi; do
+  xml="$work/prefix/share/SpecularUnit/ip/$component.xml"
+  [[ -f $xml ]] || { echo "consumer_check: FAIL: $component.xml is not installed" >&2; exit 1; }
+  while read -r named; do
+    # (and the ROM images, which a build without it does not write: ip/CMakeLists.txt)
+    if [[ $rtl != ON && ( $named == *twin* || $named == *rtl_models* || $named == *.hex ) ]]; then continue; fi
+    [[ -e "$work/prefix/share/SpecularUnit/ip/$named" ]] ||
+      { echo "consumer_check: FAIL: $component.xml names $named, which is not installed" >&2; exit 1; }
+  done < <(sed -n 's|.*<ipxact:[a-z]*>\(\.\./[^<]*\)<.*|\1|p' "$xml")
+done
 if [[ $rtl == ON ]]; then grep -q '^\./include/specular/twin/rtl_target\.h$' "$work/files.txt"; fi
 # The whole IP in Verilog from the prefix alone (docs/rtl_ip.md): Verilator reads
 # specular_ip_axi and every module it instantiates from share/SpecularUnit/rtl/.

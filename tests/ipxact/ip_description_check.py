@@ -132,9 +132,10 @@ def vlnv_ref(element):
     return tuple(element.get(a) for a in ("vendor", "library", "name", "version"))
 
 
-def check_bus_interface(fail, root, bus_trees):
+def check_bus_interface(fail, root, bus_trees, names):
     """The socket's bus type and abstraction resolve to the definitions in ip/, and its
-    port map joins a logical port of the abstraction to a port of the model."""
+    port map joins a logical port of the abstraction to a port of the model; `names`:
+    the component's interfaces (["socket"] for the SystemC targets, ["s_axi"] for the IP)."""
     bus_def = bus_trees[BUS_FILES[0]].getroot()
     abs_def = bus_trees[BUS_FILES[1]].getroot()
     fail.equal(bus_def.tag, Q + "busDefinition", BUS_FILES[0])
@@ -143,9 +144,9 @@ def check_bus_interface(fail, root, bus_trees):
         fail.check(got == want, f"{what}: {got!r}, the definition in ip/ is {want!r}")
     same(vlnv_ref(abs_def.find(Q + "busType")), vlnv_of(bus_def), "the abstraction's busType")
     interfaces = root.findall(f"{Q}busInterfaces/{Q}busInterface")
-    fail.equal([text_of(bi, "name") for bi in interfaces], ["socket", "s_axi"], "bus interfaces")
+    fail.equal([text_of(bi, "name") for bi in interfaces], names, "bus interfaces")
     physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
-    for bi in interfaces[:1]:
+    for bi in [i for i in interfaces if text_of(i, "name") == "socket"]:
         same(vlnv_ref(bi.find(Q + "busType")), vlnv_of(bus_def), "busType")
         refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
         same([vlnv_ref(r) for r in refs], [vlnv_of(abs_def)], "abstractionRef")
@@ -157,7 +158,7 @@ def check_bus_interface(fail, root, bus_trees):
             fail.check(pp in physical, f"portMap: no port {pp} in the model")
     # The Verilog view of the whole IP: ARM's AXI4-Lite definitions, every signal of
     # AXI4-Lite's RTL abstraction (AMBA AXI and ACE spec., B1.1) mapped to a port of it.
-    for bi in interfaces[1:]:
+    for bi in [i for i in interfaces if text_of(i, "name") == "s_axi"]:
         same(vlnv_ref(bi.find(Q + "busType")), ("amba.com", "AMBA4", "AXI4-Lite", "r0p0_0"), "s_axi busType")
         refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
         same([vlnv_ref(r) for r in refs], [("amba.com", "AMBA4", "AXI4-Lite_rtl", "r0p0_0")],
@@ -174,49 +175,81 @@ AXI4_LITE_SIGNALS = ("ACLK", "ARESETn", "AWVALID", "AWREADY", "AWADDR", "AWPROT"
                      "ARREADY", "ARADDR", "ARPROT", "RVALID", "RREADY", "RDATA", "RRESP")
 
 
+# The components, one per Verilog top (no port needs a parameter to say which top it is
+# of): their file, top, view, bus interfaces, and whether their map has the batch windows.
+COMPONENTS = {
+    "specular_unit.xml": ("specular_device", "rtl", ["socket"], True),
+    "specular_device_sync.xml": ("specular_device_sync", "rtl_sync", [], None),
+    "specular_ip_axi.xml": ("specular_ip_axi", "rtl_axi", ["s_axi"], False),
+}
+
+
 def check_ipxact(export, source, scratch):
     from lxml import etree
     fail = Failures()
     cpp = cpp_map(export, scratch)
-    path = os.path.join(source, "ip", "specular_unit.xml")
-    tree = etree.parse(path)  # raises on a file that is not well-formed
     bus_trees = {name: etree.parse(os.path.join(source, "ip", name)) for name in BUS_FILES}
+    trees = {name: etree.parse(os.path.join(source, "ip", name)) for name in COMPONENTS}  # raises if not well-formed
     schema = os.environ.get("SPECULAR_IPXACT_SCHEMA", "")
     if schema:
         xsd = etree.XMLSchema(etree.parse(schema))
-        for name, t in [("specular_unit.xml", tree)] + list(bus_trees.items()):
+        for name, t in list(trees.items()) + list(bus_trees.items()):
             ok = xsd.validate(t)
             fail.check(ok, f"{name} not valid against {schema}: " +
                        "; ".join(str(e) for e in list(xsd.error_log)[:5]))
             print(f"ipxact: {name} validated against {schema}: {'valid' if ok else 'INVALID'}")
     else:
         print("ipxact: SPECULAR_IPXACT_SCHEMA not set: well-formedness and structure only")
-    root = tree.getroot()
-    check_bus_interface(fail, root, bus_trees)
-    fail.equal(root.tag, Q + "component", "root element")
-    for tag in ("vendor", "library", "name", "version"):
-        fail.check(bool(text_of(root, tag)), f"VLNV: no {tag}")
+    names = set()
+    for file, (top, view, interfaces, windows) in COMPONENTS.items():
+        root = trees[file].getroot()
+        fail.equal(root.tag, Q + "component", f"{file}: root element")
+        for tag in ("vendor", "library", "name", "version"):
+            fail.check(bool(text_of(root, tag)), f"{file}: VLNV: no {tag}")
+        fail.equal(text_of(root, "name"), file[:-4], f"{file}: the component's name")
+        names.add(text_of(root, "name"))
+        check_bus_interface(fail, root, bus_trees, interfaces)
+        # no parameter chooses a top: every port is present, no RTL_TOP
+        ports = root.findall(f"{Q}model/{Q}ports/{Q}port")
+        fail.equal([text_of(p, "name") for p in ports if p.find(Q + "isPresent") is not None], [],
+                   f"{file}: ports with isPresent")
+        fail.equal(len({text_of(p, "name") for p in ports}), len(ports), f"{file}: port names unique")
+        params = [text_of(p, "name") for p in root.findall(f"{Q}parameters/{Q}parameter")]
+        fail.check("RTL_TOP" not in params, f"{file}: a parameter RTL_TOP")
+        maps = root.findall(f"{Q}memoryMaps/{Q}memoryMap")
+        fail.equal(len(maps), 0 if windows is None else 1, f"{file}: memory maps")
+        if maps:
+            check_memory_map(fail, file, root, maps[0], cpp, windows)
+    fail.equal(len(names), len(COMPONENTS), "component names distinct")
+    return fail.finish("ipxact")
+
+
+def check_memory_map(fail, file, root, memory_map, cpp, windows):
+    """The memory map against the C++ map; `windows` False: specular_ip_axi's, without
+    the batch windows and with BATCH_CAPACITY 0 (docs/decisions.md)."""
     by_name = {r["name"]: r for r in cpp["registers"]}
-    maps = root.findall(f"{Q}memoryMaps/{Q}memoryMap")
-    fail.equal(len(maps), 1, "memory maps")
-    blocks = maps[0].findall(Q + "addressBlock") if maps else []
-    fail.equal(len(blocks), 1, "address blocks")
+    rows = [r for r in cpp["registers"] if windows or r["name"] not in ("BATCH_COS", "BATCH_OUT")]
+    blocks = memory_map.findall(Q + "addressBlock")
+    fail.equal(len(blocks), 1, f"{file}: address blocks")
     if not blocks:
-        return fail.finish("ipxact")
+        return
     block = blocks[0]
-    fail.equal(sv_number(text_of(block, "baseAddress")), 0, "baseAddress")
-    fail.equal(sv_number(text_of(block, "range")), cpp["map_size"], "range")
-    fail.equal(sv_number(text_of(block, "width")), 32, "width")
+    fail.equal(sv_number(text_of(block, "baseAddress")), 0, f"{file}: baseAddress")
+    fail.equal(sv_number(text_of(block, "range")), cpp["map_size"], f"{file}: range")
+    fail.equal(sv_number(text_of(block, "width")), 32, f"{file}: width")
     # the bus interface names this memory map
     refs = root.findall(f"{Q}busInterfaces/{Q}busInterface/{Q}slave/{Q}memoryMapRef")
-    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(maps[0], "name")] * 2,
-               "slave memoryMapRef (socket, s_axi)")
+    fail.equal([r.get("memoryMapRef") for r in refs], [text_of(memory_map, "name")],
+               f"{file}: slave memoryMapRef")
     entries = [e for e in block if e.tag in (Q + "register", Q + "registerFile")]
-    fail.equal([text_of(e, "name") for e in entries], [r["name"] for r in cpp["registers"]],
-               "registers, register files and arrays in order")
-    for xe, row in zip(entries, cpp["registers"]):
+    fail.equal([text_of(e, "name") for e in entries], [r["name"] for r in rows],
+               f"{file}: registers, register files and arrays in order")
+    for xe, row in zip(entries, rows):
         name = row["name"]
-        fail.equal(sv_number(text_of(xe, "addressOffset")), row["offset"], f"{name} addressOffset")
+        resets = row["reset_of_word"]
+        if name == "BATCH_CAPACITY" and not windows:
+            resets = [0]  # the IP's BATCH_CAPACITY_VALUE
+        fail.equal(sv_number(text_of(xe, "addressOffset")), row["offset"], f"{file}: {name} addressOffset")
         if "aliases" in row:
             fail.equal(xe.tag, Q + "registerFile", f"{name}: an alias window is a registerFile")
             fail.equal(sv_number(text_of(xe, "range") or "0"), 4 * row["words"], f"{name} range")
@@ -225,18 +258,17 @@ def check_ipxact(export, source, scratch):
             for w, (xr, alias) in enumerate(zip(inner, row["aliases"])):
                 fail.equal(sv_number(text_of(xr, "addressOffset")), 4 * w, f"{name}.{alias} addressOffset")
                 fail.equal(sv_number(text_of(xr, "size")), 32, f"{name}.{alias} size")
-                check_ipxact_fields(fail, f"{name}.{alias}", xr, by_name[alias]["fields"],
-                                    row["reset_of_word"][w])
+                check_ipxact_fields(fail, f"{file}: {name}.{alias}", xr, by_name[alias]["fields"],
+                                    resets[w])
         else:
             fail.equal(xe.tag, Q + "register", f"{name}: a register")
             dims = [sv_number(d.text) for d in xe.findall(Q + "dim")]
             fail.equal(dims, [] if row["words"] == 1 else [row["words"]], f"{name} dim")
             fail.equal(sv_number(text_of(xe, "size")), 32, f"{name} size")
-            fail.check(len(set(row["reset_of_word"])) == 1,
+            fail.check(len(set(resets)) == 1,
                        f"{name}: words with different resets cannot be one register array")
-            check_ipxact_fields(fail, name, xe, row["fields"],
-                                None if row["words"] > 1 else row["reset_of_word"][0])
-    return fail.finish("ipxact")
+            check_ipxact_fields(fail, f"{file}: {name}", xe, row["fields"],
+                                None if row["words"] > 1 else resets[0])
 
 
 # ---- SystemRDL -----------------------------------------------------------------------
@@ -326,7 +358,6 @@ def check_systemrdl(export, source, scratch):
 
 # ---- the Verilog tops ----------------------------------------------------------------
 
-TOPS = {"specular_device": "rtl", "specular_device_sync": "rtl_sync", "specular_ip_axi": "rtl_axi"}
 TOP_FOLDER = {"specular_device": "device", "specular_device_sync": "device", "specular_ip_axi": "ip"}
 RTL_FOLDERS = ("device", "primitives", "design_space", "ip")  # rtl/sources.cmake
 
@@ -348,17 +379,16 @@ def yosys_parameter(text):
 def check_rtl_ports(export, source, scratch, yosys, rom_dir):
     from lxml import etree
     fail = Failures("Yosys")
-    root = etree.parse(os.path.join(source, "ip", "specular_unit.xml")).getroot()
-    model = root.find(Q + "model")
-    xml_ports = {text_of(p, "name"): p for p in model.findall(f"{Q}ports/{Q}port")}
-    instantiations = {text_of(i, "name"): i
-                      for i in model.findall(f"{Q}instantiations/{Q}componentInstantiation")}
-    file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
     rtl = os.path.join(source, "rtl")
     sources = sorted(os.path.join(rtl, d, f) for d in RTL_FOLDERS
                      for f in os.listdir(os.path.join(rtl, d)) if f.endswith(".v"))
-    parameter_of = {p.get("parameterId"): p for p in root.iter(Q + "parameter", Q + "moduleParameter")}
-    for index, (top, view) in enumerate(TOPS.items()):
+    for file, (top, view, _, _) in COMPONENTS.items():
+        root = etree.parse(os.path.join(source, "ip", file)).getroot()
+        model = root.find(Q + "model")
+        xml_ports = {text_of(p, "name"): p for p in model.findall(f"{Q}ports/{Q}port")}
+        instantiations = {text_of(i, "name"): i
+                          for i in model.findall(f"{Q}instantiations/{Q}componentInstantiation")}
+        file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
         modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{TOP_FOLDER[top]}/{top}.v; proc",
                              os.path.join(scratch, f"{top}.json"))
         ports = modules[top]["ports"]
@@ -380,9 +410,7 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
             fail.equal(width, len(yp["bits"]), f"{top}.{name} width")
             type_names = [t.text for t in wire.iter(Q + "typeName")]
             fail.equal(type_names, ["wire signed" if yp.get("signed") else "wire"], f"{top}.{name} type")
-            presence = text_of(xp, "isPresent")
-            if presence is not None:  # a port of some tops only: RTL_TOP == its index
-                fail.check(f"RTL_TOP == {index}" in presence, f"{top}.{name}: isPresent {presence!r}")
+            fail.check(xp.find(Q + "isPresent") is None, f"{top}.{name}: isPresent (every port is its top's)")
         # the module parameters, in order, with their defaults
         inst = instantiations.get(view)
         fail.check(inst is not None, f"no componentInstantiation {view}")
@@ -414,17 +442,16 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
         for f in ([] if file_set is None else file_set.findall(Q + "file")):
             rel = text_of(f, "name")  # relative to ip/, as installed beside share/SpecularUnit/rtl
             fail.check(os.path.isfile(os.path.join(source, "ip", rel)), f"{rel}: no such file")
-    # the ROM images the tops read ($readmemh), in their own file set, named by every view
-    roms = file_sets.get("rom_images")
-    listed = [] if roms is None else [os.path.basename(text_of(f, "name")) for f in roms.findall(Q + "file")]
-    fail.equal(sorted(listed), ["rom38.hex", "rom5.hex"], "file set rom_images")
-    for name in listed:
-        fail.check(os.path.isfile(os.path.join(rom_dir, name)), f"rom_images: specular_romgen wrote no {name}")
-    for view in TOPS.values():
-        inst = instantiations.get(view)
+        # the ROM images the top reads ($readmemh), in their own file set, named by its view
+        roms = file_sets.get("rom_images")
+        listed = [] if roms is None else [os.path.basename(text_of(f, "name")) for f in roms.findall(Q + "file")]
+        fail.equal(sorted(listed), ["rom38.hex", "rom5.hex"], f"{file}: file set rom_images")
+        for name in listed:
+            fail.check(os.path.isfile(os.path.join(rom_dir, name)), f"rom_images: specular_romgen wrote no {name}")
         refs = [] if inst is None else [text_of(r, "localName") for r in inst.findall(Q + "fileSetRef")]
         fail.check("rom_images" in refs, f"{view}: no fileSetRef rom_images")
-    fail.check("RTL_TOP" in parameter_of, "no component parameter RTL_TOP")
+    root = etree.parse(os.path.join(source, "ip", "specular_unit.xml")).getroot()
+    file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
     # the SystemC headers listed are headers of the package
     headers = file_sets.get("systemc_headers")
     for f in ([] if headers is None else headers.findall(Q + "file")):
@@ -441,7 +468,7 @@ def check_current(export, source, scratch):
     for name, option in fresh.items():
         args += [option, os.path.join(scratch, name)]
     subprocess.run(args, check=True)
-    for name in list(fresh) + list(BUS_FILES):
+    for name in list(fresh) + [c for c in COMPONENTS if c not in fresh] + list(BUS_FILES):
         with open(os.path.join(scratch, name), "rb") as f:
             now = f.read()
         committed_path = os.path.join(source, "ip", name)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 
 #include "specular/tlm/register_fields.h"
 #include "specular/tlm/register_map.h"
@@ -149,11 +150,15 @@ bool is_alias_window(const RegisterInfo& row) {
   return row.reg == Reg::operands || row.reg == Reg::results;
 }
 
-void write_memory_map(Xml& x) {
+/// `windows` false: the map of specular_ip_axi, which has no batch windows (holes there,
+/// BATCH_CAPACITY 0: docs/decisions.md).
+void write_memory_map(Xml& x, bool windows) {
   x.open("memoryMaps");
   x.open("memoryMap");
   x.leaf("name", "registers");
-  x.leaf("description", "The TLM-2.0 target's registers and windows (docs/tlm.md)");
+  x.leaf("description", windows ? "The TLM-2.0 target's registers and windows (docs/tlm.md)"
+                                : "specular_ip_axi's registers (docs/rtl_ip.md): the TLM-2.0 "
+                                  "target's without the batch windows, whose offsets are holes");
   x.open("addressBlock");
   x.leaf("name", "specular");
   x.leaf("description",
@@ -163,7 +168,11 @@ void write_memory_map(Xml& x) {
   x.leaf("width", "32");
   x.leaf("usage", "register");
   for (const RegisterInfo& row : register_map) {
-    if (row.words == 1) {
+    const bool batch_window = row.reg == Reg::batch_cos || row.reg == Reg::batch_out;
+    if (batch_window && !windows) continue;
+    if (row.reg == Reg::batch_capacity && !windows) {
+      write_register(x, row.reg, row.offset, 0, row.description + std::string(" (0 on this IP)"));
+    } else if (row.words == 1) {
       write_register(x, row.reg, row.offset, row.reset, row.description);
     } else if (is_alias_window(row)) {
       // A register file of the registers it aliases, each with its own fields and reset.
@@ -230,6 +239,7 @@ std::string prefix_of_top(const VerilogModule& top) {
 void write_views(Xml& x, const ComponentFacts& facts) {
   x.open("views");
   for (const SystemCView& v : systemc_views) {
+    if (!facts.systemc) break;
     x.open("view");
     x.leaf("name", v.view);
     x.leaf("description", v.description);
@@ -251,6 +261,7 @@ void write_views(Xml& x, const ComponentFacts& facts) {
 void write_instantiations(Xml& x, const ComponentFacts& facts) {
   x.open("instantiations");
   for (const SystemCView& v : systemc_views) {
+    if (!facts.systemc) break;
     x.open("componentInstantiation");
     x.leaf("name", v.view);
     x.leaf("language", "systemc");
@@ -298,11 +309,9 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
   x.close("instantiations");
 }
 
-void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string>& views,
-                     const std::string& presence) {
+void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string>& views) {
   x.open("port");
   x.leaf("name", p.name);
-  if (!presence.empty()) x.leaf("isPresent", presence);
   x.open("wire");
   x.leaf("direction", p.direction);
   if (p.is_vector) {
@@ -325,64 +334,47 @@ void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string
 
 void write_ports(Xml& x, const ComponentFacts& facts) {
   x.open("ports");
-  // The SystemC targets' socket and interrupt.
-  x.open("port");
-  x.leaf("name", "socket");
-  x.leaf("description",
-         "tlm_utils::simple_target_socket<T, 32>: the registers of memory map 'registers'");
-  x.open("transactional");
-  x.leaf("initiative", "provides");
-  x.leaf("busWidth", "32");
-  x.open("transTypeDefs");
-  x.open("transTypeDef");
-  x.leaf("typeName", "tlm_utils::simple_target_socket");
-  for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
-  x.close("transTypeDef");
-  x.close("transTypeDefs");
-  x.close("transactional");
-  x.close("port");
-  x.open("port");
-  x.leaf("name", "done_irq");
-  x.leaf("description", "Level: high while STATUS.DONE is set (sc_core::sc_out<bool>; may stay unbound)");
-  x.open("wire");
-  x.leaf("direction", "out");
-  x.open("wireTypeDefs");
-  x.open("wireTypeDef");
-  x.leaf("typeName", "sc_core::sc_out<bool>");
-  for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
-  x.close("wireTypeDef");
-  x.close("wireTypeDefs");
-  x.close("wire");
-  x.close("port");
-  // The Verilog tops' ports: each name once, in the order of the first top that has
-  // it; a port that not every top has is present only for that top (parameter RTL_TOP).
-  std::vector<std::string> order;
-  std::map<std::string, std::vector<std::size_t>> owners;
-  std::map<std::string, VerilogPort> port_of;
-  for (std::size_t t = 0; t < facts.tops.size(); ++t)
-    for (const VerilogPort& p : facts.tops[t].ports) {
-      if (!owners.count(p.name)) {
-        order.push_back(p.name);
-        port_of[p.name] = p;
-      }
-      owners[p.name].push_back(t);
-    }
-  for (const std::string& name : order) {
-    std::vector<std::string> views;
-    std::string presence;
-    for (const std::size_t t : owners[name]) {
-      views.push_back(view_of_top(facts.tops[t]));
-      if (owners[name].size() < facts.tops.size())
-        presence += (presence.empty() ? "" : " || ") + std::string("RTL_TOP == ") + std::to_string(t);
-    }
-    write_wire_port(x, port_of[name], views, presence);
+  if (facts.systemc) {
+    // The SystemC targets' socket and interrupt.
+    x.open("port");
+    x.leaf("name", "socket");
+    x.leaf("description",
+           "tlm_utils::simple_target_socket<T, 32>: the registers of memory map 'registers'");
+    x.open("transactional");
+    x.leaf("initiative", "provides");
+    x.leaf("busWidth", "32");
+    x.open("transTypeDefs");
+    x.open("transTypeDef");
+    x.leaf("typeName", "tlm_utils::simple_target_socket");
+    for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
+    x.close("transTypeDef");
+    x.close("transTypeDefs");
+    x.close("transactional");
+    x.close("port");
+    x.open("port");
+    x.leaf("name", "done_irq");
+    x.leaf("description", "Level: high while STATUS.DONE is set (sc_core::sc_out<bool>; may stay unbound)");
+    x.open("wire");
+    x.leaf("direction", "out");
+    x.open("wireTypeDefs");
+    x.open("wireTypeDef");
+    x.leaf("typeName", "sc_core::sc_out<bool>");
+    for (const SystemCView& v : systemc_views) x.leaf("viewRef", v.view);
+    x.close("wireTypeDef");
+    x.close("wireTypeDefs");
+    x.close("wire");
+    x.close("port");
   }
+  // The Verilog top's ports, every one present (one top per component).
+  const VerilogModule& top = facts.tops.front();
+  for (const VerilogPort& p : top.ports) write_wire_port(x, p, {view_of_top(top)});
   x.close("ports");
 }
 
 void write_file_sets(Xml& x, const ComponentFacts& facts) {
   const std::string prefix = "../../../";  // from <prefix>/share/SpecularUnit/ip/
   x.open("fileSets");
+  if (facts.systemc) {
   x.open("fileSet");
   x.leaf("name", "systemc_headers");
   x.leaf("description",
@@ -418,6 +410,7 @@ void write_file_sets(Xml& x, const ComponentFacts& facts) {
   x.leaf("description", "find_package(SpecularUnit CONFIG REQUIRED)");
   x.close("file");
   x.close("fileSet");
+  }
   for (std::size_t t = 0; t < facts.tops.size(); ++t) {
     x.open("fileSet");
     x.leaf("name", "verilog_" + view_of_top(facts.tops[t]));
@@ -503,6 +496,10 @@ void write_axi_interface(Xml& x, const ComponentFacts& facts) {
 }  // namespace
 
 std::string ipxact_component(const ComponentFacts& facts) {
+  if (facts.tops.size() != 1 || facts.top_files.size() != 1)
+    throw std::invalid_argument("ipxact_component: " + facts.name + " has " +
+                                std::to_string(facts.tops.size()) + " Verilog tops, one expected");
+  const bool axi = facts.tops.front().name == "specular_ip_axi";
   Xml x;
   x.line("<?xml version=\"1.0\" encoding=\"UTF-8\"?>");
   x.line("<!-- Generated by specular_ip_export from modules/include/specular/tlm/register_map.h,");
@@ -514,9 +511,10 @@ std::string ipxact_component(const ComponentFacts& facts) {
          "http://www.accellera.org/XMLSchema/IPXACT/1685-2014/index.xsd\"");
   x.leaf("vendor", "specular-unit");
   x.leaf("library", "ip");
-  x.leaf("name", "specular_unit");
+  x.leaf("name", facts.name);
   x.leaf("version", facts.version);
-  x.open("busInterfaces");
+  if (facts.systemc || axi) x.open("busInterfaces");
+  if (facts.systemc) {
   x.open("busInterface");
   x.leaf("name", "socket");
   x.leaf("description",
@@ -544,29 +542,17 @@ std::string ipxact_component(const ComponentFacts& facts) {
   x.close("slave");
   x.leaf("bitsInLau", "8");
   x.close("busInterface");
+  }
   write_axi_interface(x, facts);
-  x.close("busInterfaces");
-  write_memory_map(x);
+  if (facts.systemc || axi) x.close("busInterfaces");
+  if (facts.systemc || axi) write_memory_map(x, !axi);
   x.open("model");
   write_views(x, facts);
   write_instantiations(x, facts);
   write_ports(x, facts);
   x.close("model");
   write_file_sets(x, facts);
-  x.leaf("description",
-         "Specular colour intensity device of patent UA 59965 U: SystemC TLM-2.0 targets and "
-         "Verilog tops (README.md)");
-  x.open("parameters");
-  std::string tops;
-  for (std::size_t t = 0; t < facts.tops.size(); ++t)
-    tops += (t ? ", " : "") + std::to_string(t) + " " + facts.tops[t].name;
-  x.open("parameter", "parameterId=\"RTL_TOP\" resolve=\"user\" type=\"longint\"");
-  x.leaf("name", "RTL_TOP");
-  x.leaf("description", "Which Verilog top the pin ports belong to: " + tops +
-                            " (ports that not every top has carry isPresent on it)");
-  x.leaf("value", "0");
-  x.close("parameter");
-  x.close("parameters");
+  x.leaf("description", facts.description);
   x.close("component");
   return x.str();
 }

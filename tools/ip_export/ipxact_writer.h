@@ -11,14 +11,21 @@
 namespace specular {
 namespace ip_export {
 
-/// What the component says beyond the register map.
+/// What a component says beyond the register map. One component per Verilog top, so
+/// that every port of a component is its top's and no parameter selects them: the
+/// SystemC targets with the drawn device (specular_unit), the synchronous device
+/// (specular_device_sync), the whole IP behind AXI4-Lite (specular_ip_axi).
 struct ComponentFacts {
+  std::string name = "specular_unit";     ///< the VLNV's name, and the file's (NAME.xml)
+  std::string description;                ///< the component's description
+  bool systemc = true;                    ///< with the SystemC views, their socket and files
   std::string version;                    ///< the package's version (the VLNV's)
   std::string libdir = "lib";             ///< CMAKE_INSTALL_LIBDIR, relative to the prefix
-  std::vector<VerilogModule> tops;        ///< specular_device, specular_device_sync
-  std::vector<std::vector<std::string>> top_files;  ///< each top's Verilog files (names only)
+  std::vector<VerilogModule> tops;        ///< its one Verilog top
+  std::vector<std::vector<std::string>> top_files;  ///< the top's Verilog files (names only)
 };
 
+/// Throws std::invalid_argument unless `facts` has exactly one Verilog top.
 std::string ipxact_component(const ComponentFacts& facts);
 
 /// The bus definition and the (TLM) abstraction definition the component's bus

@@ -4,7 +4,9 @@
 //   specular_ip_export --source-dir DIR [--version V] [--libdir D]
 //                      [--ipxact FILE] [--systemrdl FILE] [--json FILE]
 //
-//   --ipxact FILE     the IEEE 1685-2014 component (ip/specular_unit.xml)
+//   --ipxact FILE     the IEEE 1685-2014 components, one per Verilog top: FILE (the SystemC
+//                     targets with the drawn device, ip/specular_unit.xml) and beside it
+//                     specular_device_sync.xml and specular_ip_axi.xml
 //   --systemrdl FILE  the SystemRDL 2.0 addrmap (ip/specular_unit.rdl)
 //   --json FILE       the C++ map as plain JSON, for the tests (no writer's code)
 //   --verilog FILE    the register block in Verilog (rtl/ip/specular_reg_block.v)
@@ -103,9 +105,26 @@ int main(int argc, char** argv) {
       std::cerr << "specular_ip_export: error: --ipxact needs --source-dir (the Verilog tops)\n";
       return 2;
     }
-    ComponentFacts facts;
-    facts.version = options["--version"];
-    facts.libdir = options["--libdir"];
+    struct Component {
+      const char* top;  // relative to rtl/
+      const char* name;
+      const char* description;
+      bool systemc;
+    };
+    const Component components[] = {
+        {"device/specular_device", "specular_unit",
+         "Specular colour intensity device of patent UA 59965 U: the SystemC TLM-2.0 targets and "
+         "the drawn device's Verilog top (README.md)", true},
+        {"device/specular_device_sync", "specular_device_sync",
+         "The synchronous variant of the device of UA 59965 U (one clock, enables; docs/rtl.md): "
+         "its Verilog top with pins 17-35", false},
+        {"ip/specular_ip_axi", "specular_ip_axi",
+         "The whole IP in Verilog: an AMBA AXI4-Lite slave with the generated register block "
+         "and the synchronous device, done_irq (docs/rtl_ip.md)", false},
+    };
+    const std::string main_file = options["--ipxact"];
+    const std::string::size_type slash = main_file.find_last_of('/');
+    const std::string folder = slash == std::string::npos ? "" : main_file.substr(0, slash + 1);
     const std::string rtl = options["--source-dir"] + "/rtl";
     try {
       // The folders of rtl/sources.cmake: the device's blocks, the primitives, the
@@ -113,22 +132,28 @@ int main(int argc, char** argv) {
       // and ip/: the whole IP behind its AXI4-Lite slave (docs/rtl_ip.md)
       const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space",
                                          rtl + "/ip"});
-      for (const char* top : {"device/specular_device", "device/specular_device_sync",
-                              "ip/specular_ip_axi"}) {
+      for (const Component& c : components) {
+        ComponentFacts facts;
+        facts.name = c.name;
+        facts.description = c.description;
+        facts.systemc = c.systemc;
+        facts.version = options["--version"];
+        facts.libdir = options["--libdir"];
         // The file as the component names it: relative to the source tree.
-        VerilogModule m = read_module_header(rtl + "/" + top + ".v");
-        m.file = std::string("rtl/") + top + ".v";
+        VerilogModule m = read_module_header(rtl + "/" + c.top + ".v");
+        m.file = std::string("rtl/") + c.top + ".v";
         facts.tops.push_back(m);
         std::vector<std::string> names;  // relative to rtl/ (device/adder8.v)
         for (const std::string& path : file_closure(modules, m.name))
           names.push_back(path.substr(rtl.size() + 1));
         facts.top_files.push_back(names);
+        const std::string file = c.systemc ? main_file : folder + c.name + ".xml";
+        ok = write(file, ipxact_component(facts)) && ok;
       }
     } catch (const VerilogError& e) {
       std::cerr << "specular_ip_export: error: " << e.what() << "\n";
       return 2;
     }
-    ok = write(options["--ipxact"], ipxact_component(facts)) && ok;
   }
   return ok ? 0 : 2;
 }

@@ -52,6 +52,7 @@ module specular_ip_axi_tb;
   localparam [31:0] STATUS = 32'h00C, CONTROL = 32'h010, ERROR_ADDRESS = 32'h018;
   localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;
   localparam [31:0] OUT_R = 32'h040, REG1 = 32'h050, REG9_PASS1_LO = 32'h054;
+  localparam [31:0] NORM39 = 32'h068;
   localparam [31:0] OPERANDS = 32'h080, RESULTS = 32'h0A0;
 
   integer seed = SEED;
@@ -188,10 +189,11 @@ module specular_ip_axi_tb;
   reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
              v_out26 [0:MAX_VECTORS-1];
   reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
+  real v_norm [0:MAX_VECTORS-1];
   integer count;
   task read_vectors;
     integer fd, fields, n, r, g, b, pass;
-    real cos, skip;
+    real cos, skip, norm;
     reg [63:0] h1, h2, h3, h4, h5, h6;
     reg [8*2048-1:0] header;
     begin
@@ -203,11 +205,12 @@ module specular_ip_axi_tb;
       while (!$feof(fd) && fields == 25) begin
         fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
                               "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
-                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
+                         cos, n, r, g, b, skip, skip, skip, norm, skip, skip, skip, skip, skip,
                          skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
         if (fields == 25) begin
           if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_tb: more than %0d vectors", MAX_VECTORS);
           v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
+          v_norm[count] = norm;
           v_reg1[count] = h1[31:0];
           // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
           v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
@@ -292,6 +295,8 @@ module specular_ip_axi_tb;
       expect_read(REG9_PASS1_LO + 4, v_pass1[i][63:32], OKAY);
       expect_read(REG9_PASS1_LO + 8, v_pass2[i][31:0], OKAY);
       expect_read(REG9_PASS1_LO + 12, v_pass2[i][63:32], OKAY);
+      // multiplier 39's s·K·A (S10.20), from Core's real
+      expect_read(NORM39, $rtoi(v_norm[i] * 1048576.0), OKAY);
       write(STATUS, 32'h2, OKAY);  // W1C: done_irq falls
       @(posedge aclk);
       #1 if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq still high after W1C of DONE");
@@ -434,9 +439,20 @@ module specular_ip_axi_tb;
     end
   endtask
 
+  // A channel that never answers is a failure, not a hang (a mutant's READY or VALID stuck
+  // at 0): a run takes about 230 cycles per operation with stalls, misuse included; the
+  // limit is several times that.
+  reg vectors_read = 1'b0;
+  initial begin : watchdog
+    wait (vectors_read);
+    repeat (1000 * (count + 100)) @(posedge aclk);
+    $fatal(1, "MISMATCH no end within %0d cycles: a channel hangs", 1000 * (count + 100));
+  end
+
   integer i;
   initial begin
     read_vectors;
+    vectors_read = 1'b1;
     cycles(3);
     aresetn = 1'b1;
     cycles(1);

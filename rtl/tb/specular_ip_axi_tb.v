@@ -400,6 +400,8 @@ module specular_ip_axi_tb;
 
   // Writes queued behind responses the master has not taken (AXI4-Lite lets it issue the
   // next AW and W meanwhile; the slave holds one of each and stalls the rest).
+  // (The held-back B waits with `repeat`, not `cycles`: a task is static, and the other
+  // branches' calls of `cycles` would overwrite its count.)
   task check_queued_writes;
     reg [1:0] r1, r2, r3;
     begin
@@ -407,7 +409,7 @@ module specular_ip_axi_tb;
       fork
         send_aw(N);
         send_w(32'd0, 4'b1111);
-        begin cycles(12); take_b(r1); end
+        begin repeat (12) @(posedge aclk); #1 take_b(r1); end
       join
       if (r1 !== SLVERR) $fatal(1, "MISMATCH a late-taken refusal's B: %b, expected SLVERR", r1);
       expect_refusal(8'd2, N);
@@ -415,7 +417,7 @@ module specular_ip_axi_tb;
       fork
         begin send_aw(R); send_aw(G); send_aw(B); end
         begin send_w(32'd1, 4'b1111); send_w(32'd2, 4'b1111); send_w(32'd3, 4'b1111); end
-        begin cycles(20); take_b(r1); take_b(r2); take_b(r3); end
+        begin repeat (20) @(posedge aclk); #1 take_b(r1); take_b(r2); take_b(r3); end
       join
       if (r1 !== OKAY || r2 !== OKAY || r3 !== OKAY)
         $fatal(1, "MISMATCH queued writes' responses %b %b %b, expected OKAY", r1, r2, r3);

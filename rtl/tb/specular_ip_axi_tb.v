@@ -329,8 +329,18 @@ module specular_ip_axi_tb;
       write(G, 32'd256, SLVERR);          expect_refusal(8'd3, G);
       write(OPERANDS + 8, 32'd300, SLVERR); expect_refusal(8'd3, OPERANDS + 8);
       write(32'h000, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h000);
-      write(32'h004, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h004);   // VERSION
-      write(ROM38_K, 32'd1, SLVERR);      expect_refusal(8'd4, ROM38_K);
+      // every read-only word of docs/tlm.md's map: CONFIG, BATCH_CAPACITY, ERROR_ADDRESS,
+      // OUT_R .. PIN20_A (0x04C is a hole), the RESULTS window (ID above, VERSION here)
+      write(32'h004, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h004);
+      write(32'h008, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h008);
+      write(32'h014, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h014);
+      for (k = 0; k < 13; k = k + 1)
+        if (k != 3) begin
+          write(OUT_R + 4 * k, 32'd1, SLVERR); expect_refusal(8'd4, OUT_R + 4 * k);
+        end
+      for (k = 1; k < 3; k = k + 1) begin
+        write(RESULTS + 4 * k, 32'd1, SLVERR); expect_refusal(8'd4, RESULTS + 4 * k);
+      end
       // every bit above COS's 2^16 alone: out of range, whichever bit it is
       for (k = 17; k < 32; k = k + 1) begin
         write(COS, 32'd1 << k, SLVERR);   expect_refusal(8'd1, COS);

@@ -355,9 +355,10 @@ module specular_ip_axi_tb;
         for (j = 0; j < 43; j = j + 1) begin   // every word up to RESULTS' last
           expect_read(32'd1 << k | 4 * j, 32'd0, DECERR); expect_refusal(8'd7, 32'd1 << k | 4 * j);
         end
-      for (k = 15; k < 32; k = k + 1) begin
-        write(32'd1 << k | 32'h024, 32'd7, DECERR);      expect_refusal(8'd7, 32'd1 << k | 32'h024);
-      end
+      for (k = 15; k < 32; k = k + 1)
+        for (j = 0; j < 43; j = j + 1) begin   // and every write there, whatever it carries
+          write(32'd1 << k | 4 * j, 32'd0, DECERR); expect_refusal(8'd7, 32'd1 << k | 4 * j);
+        end
       write(32'h01C, 32'd1, DECERR);      expect_refusal(8'd7, 32'h01C);   // a hole
       expect_read(32'h034, 32'd0, DECERR); expect_refusal(8'd7, 32'h034);
       write(32'h1000, 32'd5, DECERR);     expect_refusal(8'd7, 32'h1000);  // BATCH_COS: left out

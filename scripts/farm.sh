@@ -133,10 +133,13 @@ regression_tasks() {
       # and the RTL's line and toggle coverage (Verilator): the twins' and variants' quick
       # tests in 8 slices, their long tests on operation shard I/8 (scripts/rtl_coverage.sh)
       emit_group rtl_coverage rtl_coverage 8 --long ;;
-    mutants)  # issue 37: Yosys mutants of the three RTL targets, every C++ mutant
+    mutants)  # issue 37: Yosys mutants of the RTL targets, every C++ mutant
       emit_group rtl_mutants_specular_device rtl_mutants 8 --target specular_device --count 200 --seed 1
       emit_group rtl_mutants_specular_device_sync rtl_mutants 8 --target specular_device_sync --count 200 --seed 1
       emit_group rtl_mutants_control_unit16 rtl_mutants 2 --target control_unit16 --count 100 --seed 1
+      # the whole IP (issue 46): the register block and the AXI top, each its own module
+      emit_group rtl_mutants_specular_reg_block rtl_mutants 2 --target specular_reg_block --count 100 --seed 1
+      emit_group rtl_mutants_specular_ip_axi rtl_mutants 2 --target specular_ip_axi --count 100 --seed 1
       emit_group cpp_mutants cpp_mutants 40 --copy @WORK@ ;;
     layout)  # issue 48: one task per design, the two device tops and every variant:
       # layout.sh (silicon.sh --no-gatesim, placement, routing, DRC, LVS, SPEF, STA), then

@@ -52,6 +52,7 @@ module specular_ip_axi_tb;
   localparam [31:0] STATUS = 32'h00C, CONTROL = 32'h010, ERROR_ADDRESS = 32'h018;
   localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;
   localparam [31:0] OUT_R = 32'h040, REG1 = 32'h050, REG9_PASS1_LO = 32'h054;
+  localparam [31:0] ROM38_K = 32'h064, NORM39 = 32'h068;
   localparam [31:0] OPERANDS = 32'h080, RESULTS = 32'h0A0;
 
   integer seed = SEED;
@@ -188,10 +189,16 @@ module specular_ip_axi_tb;
   reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
              v_out26 [0:MAX_VECTORS-1];
   reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
+  real v_norm [0:MAX_VECTORS-1];
+  // ROM 38's table as specular_romgen writes it from the C++ tables (rtl_rom_contents
+  // checks the image against them): ROM38_K after an operation is word n of bank 0
+  // (CONFIG's default: patent constants and normalisation).
+  reg [24:0] rom38_table [0:16383];
+  initial $readmemh(ROM38_IMAGE, rom38_table);
   integer count;
   task read_vectors;
     integer fd, fields, n, r, g, b, pass;
-    real cos, skip;
+    real cos, skip, norm;
     reg [63:0] h1, h2, h3, h4, h5, h6;
     reg [8*2048-1:0] header;
     begin
@@ -203,11 +210,12 @@ module specular_ip_axi_tb;
       while (!$feof(fd) && fields == 25) begin
         fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
                               "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
-                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
+                         cos, n, r, g, b, skip, skip, skip, norm, skip, skip, skip, skip, skip,
                          skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
         if (fields == 25) begin
           if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_tb: more than %0d vectors", MAX_VECTORS);
           v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
+          v_norm[count] = norm;
           v_reg1[count] = h1[31:0];
           // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
           v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
@@ -239,6 +247,12 @@ module specular_ip_axi_tb;
       expect_read(R, 32'h0, OKAY);
       expect_read(G, 32'h0, OKAY);
       expect_read(B, 32'h0, OKAY);
+      // the operands again, each a cycle later: reads come every 2 cycles, so a bit that
+      // toggles each cycle would otherwise be seen on one phase only
+      for (k = 0; k < 5; k = k + 1) begin
+        cycles(1);
+        expect_read(COS + 4 * k, k == 1 ? 32'h1 : 32'h0, OKAY);
+      end
       for (k = 0; k < 11; k = k + 1)             // OUT_R .. NORM39 (0x040-0x068, holes DECERR)
         expect_read(OUT_R + 4 * k, 32'h0, (k == 3 || k == 19) ? DECERR : OKAY);
       write(STATUS, 32'h4, OKAY);                // the hole at 0x04C was read: clear the record
@@ -292,6 +306,9 @@ module specular_ip_axi_tb;
       expect_read(REG9_PASS1_LO + 4, v_pass1[i][63:32], OKAY);
       expect_read(REG9_PASS1_LO + 8, v_pass2[i][31:0], OKAY);
       expect_read(REG9_PASS1_LO + 12, v_pass2[i][63:32], OKAY);
+      expect_read(ROM38_K, {7'd0, rom38_table[v_n[i]]}, OKAY);
+      // multiplier 39's s·K·A (S10.20), from Core's real
+      expect_read(NORM39, $rtoi(v_norm[i] * 1048576.0), OKAY);
       write(STATUS, 32'h2, OKAY);  // W1C: done_irq falls
       @(posedge aclk);
       #1 if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq still high after W1C of DONE");
@@ -303,7 +320,7 @@ module specular_ip_axi_tb;
     reg [1:0] response;
     integer k, j;
     begin
-      write(N, 32'd40, OKAY);
+      write(N, 32'd36, OKAY);
       write(G, 32'd0, OKAY);
       write(N, 32'd0, SLVERR);            expect_refusal(8'd2, N);
       write(N, 32'd1001, SLVERR);         expect_refusal(8'd2, N);
@@ -312,6 +329,22 @@ module specular_ip_axi_tb;
       write(G, 32'd256, SLVERR);          expect_refusal(8'd3, G);
       write(OPERANDS + 8, 32'd300, SLVERR); expect_refusal(8'd3, OPERANDS + 8);
       write(32'h000, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h000);
+      // every read-only word of docs/tlm.md's map: CONFIG, BATCH_CAPACITY, ERROR_ADDRESS,
+      // OUT_R .. PIN20_A (0x04C is a hole), the RESULTS window (ID above, VERSION here)
+      write(32'h004, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h004);
+      write(32'h008, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h008);
+      write(32'h014, 32'd1, SLVERR);      expect_refusal(8'd4, 32'h014);
+      for (k = 0; k < 13; k = k + 1)
+        if (k != 3) begin
+          write(OUT_R + 4 * k, 32'd1, SLVERR); expect_refusal(8'd4, OUT_R + 4 * k);
+        end
+      for (k = 1; k < 3; k = k + 1) begin
+        write(RESULTS + 4 * k, 32'd1, SLVERR); expect_refusal(8'd4, RESULTS + 4 * k);
+      end
+      // every bit above COS's 2^16 alone: out of range, whichever bit it is
+      for (k = 17; k < 32; k = k + 1) begin
+        write(COS, 32'd1 << k, SLVERR);   expect_refusal(8'd1, COS);
+      end
       write(RESULTS, 32'd1, SLVERR);      expect_refusal(8'd4, RESULTS);
       write(ERROR_ADDRESS, 32'd1, SLVERR); expect_refusal(8'd4, ERROR_ADDRESS);
       write(CONTROL, 32'h2, SLVERR);      expect_refusal(8'd5, CONTROL);
@@ -322,9 +355,10 @@ module specular_ip_axi_tb;
         for (j = 0; j < 43; j = j + 1) begin   // every word up to RESULTS' last
           expect_read(32'd1 << k | 4 * j, 32'd0, DECERR); expect_refusal(8'd7, 32'd1 << k | 4 * j);
         end
-      for (k = 15; k < 32; k = k + 1) begin
-        write(32'd1 << k | 32'h024, 32'd7, DECERR);      expect_refusal(8'd7, 32'd1 << k | 32'h024);
-      end
+      for (k = 15; k < 32; k = k + 1)
+        for (j = 0; j < 43; j = j + 1) begin   // and every write there, whatever it carries
+          write(32'd1 << k | 4 * j, 32'd0, DECERR); expect_refusal(8'd7, 32'd1 << k | 4 * j);
+        end
       write(32'h01C, 32'd1, DECERR);      expect_refusal(8'd7, 32'h01C);   // a hole
       expect_read(32'h034, 32'd0, DECERR); expect_refusal(8'd7, 32'h034);
       write(32'h1000, 32'd5, DECERR);     expect_refusal(8'd7, 32'h1000);  // BATCH_COS: left out
@@ -337,18 +371,20 @@ module specular_ip_axi_tb;
       write_strobed(OPERANDS + 4, 32'd5, 4'b0001, SLVERR); expect_refusal(8'd8, OPERANDS + 4);
       write_strobed(32'h041, 32'h0000_0100, 4'b0010, SLVERR); expect_refusal(8'd4, 32'h041);
       // the operands kept their values through every refusal
-      expect_read(N, 32'd40, OKAY);
+      expect_read(N, 32'd36, OKAY);
       expect_read(COS, 32'd65536, OKAY);
       expect_read(G, 32'd0, OKAY);
       // sub-word writes merge into the operand registers, checked as a whole word
-      write_strobed(N + 1, 32'h0000_0300, 4'b0010, OKAY);       // N = 0x328 = 808
-      expect_read(N, 32'd808, OKAY);
-      write_strobed(N + 2, 32'h0001_0000, 4'b1100, SLVERR);     // 0x10328: above 1000
+      write_strobed(N + 1, 32'h0000_0300, 4'b0010, OKAY);       // N = 0x324 = 804
+      expect_read(N, 32'd804, OKAY);
+      write_strobed(N + 2, 32'h0001_0000, 4'b1100, SLVERR);     // 0x10324: above 1000
       expect_refusal(8'd2, N + 2);
-      expect_read(N, 32'd808, OKAY);
+      expect_read(N, 32'd804, OKAY);
       write_strobed(R, 32'h0000_00FF, 4'b0001, OKAY);
       write_strobed(R + 1, 32'h0000_0100, 4'b0010, SLVERR);      // 0x1FF
       expect_refusal(8'd3, R + 1);
+      expect_read(R, 32'd255, OKAY);
+      write_strobed(R + 1, 32'h0000_0000, 4'b0010, OKAY);       // byte 1 = 0: R keeps 0xFF
       expect_read(R, 32'd255, OKAY);
       // a START by a byte write, the DONE flag cleared by a byte write
       write_strobed(CONTROL, 32'h0000_0001, 4'b0001, OKAY);
@@ -370,6 +406,50 @@ module specular_ip_axi_tb;
       write(B, 32'd999, SLVERR);
       expect_refusal(8'd3, B);
       read_raw(STATUS, data, response);
+    end
+  endtask
+
+  // Writes queued behind responses the master has not taken (AXI4-Lite lets it issue the
+  // next AW and W meanwhile; the slave holds one of each and stalls the rest).
+  // (The held-back B waits with `repeat`, not `cycles`: a task is static, and the other
+  // branches' calls of `cycles` would overwrite its count.)
+  task check_queued_writes;
+    reg [1:0] r1, r2, r3;
+    begin
+      // a refusal's B taken late: BRESP stays SLVERR while it waits (props check it)
+      fork
+        send_aw(N);
+        send_w(32'd0, 4'b1111);
+        begin repeat (12) @(posedge aclk); #1 take_b(r1); end
+      join
+      if (r1 !== SLVERR) $fatal(1, "MISMATCH a late-taken refusal's B: %b, expected SLVERR", r1);
+      expect_refusal(8'd2, N);
+      // three writes, B held back 20 cycles: the third W must wait, not replace the second's data
+      fork
+        begin send_aw(R); send_aw(G); send_aw(B); end
+        begin send_w(32'd1, 4'b1111); send_w(32'd2, 4'b1111); send_w(32'd3, 4'b1111); end
+        begin repeat (20) @(posedge aclk); #1 take_b(r1); take_b(r2); take_b(r3); end
+      join
+      if (r1 !== OKAY || r2 !== OKAY || r3 !== OKAY)
+        $fatal(1, "MISMATCH queued writes' responses %b %b %b, expected OKAY", r1, r2, r3);
+      expect_read(R, 32'd1, OKAY);
+      expect_read(G, 32'd2, OKAY);
+      expect_read(B, 32'd3, OKAY);
+      // a write issued while an operation runs is done after it: the START's B (OKAY, with
+      // the results) comes first, then the write's (a refusal here)
+      fork send_aw(CONTROL); send_w(32'h1, 4'b1111); join
+      cycles(1);
+      fork send_aw(N); send_w(32'd0, 4'b1111); join
+      take_b(r1);
+      take_b(r2);
+      if (r1 !== OKAY || r2 !== SLVERR)
+        $fatal(1, "MISMATCH a write during an operation: B %b then %b, expected OKAY then SLVERR", r1, r2);
+      expect_read(STATUS, 32'h2 | 32'h4 | (32'd2 << 8), OKAY);
+      write(STATUS, 32'h2, OKAY);
+      expect_refusal(8'd2, N);
+      // a byte-3 write whose other lanes carry data: those bits are not written
+      write_strobed(N + 3, 32'h0020_0000, 4'b1000, OKAY);
+      expect_read(N, 32'd804, OKAY);
     end
   endtask
 
@@ -423,7 +503,7 @@ module specular_ip_axi_tb;
       write(STATUS, 32'h2, OKAY);
       fork
         write(R, 32'd17, OKAY);
-        expect_read(N, 32'd808, OKAY);
+        expect_read(N, 32'd804, OKAY);
       join
       fork
         write(G, 32'd18, OKAY);
@@ -431,12 +511,24 @@ module specular_ip_axi_tb;
       join
       expect_refusal(8'd7, 32'h01C);
       expect_read(G, 32'd18, OKAY);
+      check_queued_writes;
     end
   endtask
+
+  // A channel that never answers is a failure, not a hang (a mutant's READY or VALID stuck
+  // at 0): a run takes about 230 cycles per operation with stalls, misuse included; the
+  // limit is several times that.
+  reg vectors_read = 1'b0;
+  initial begin : watchdog
+    wait (vectors_read);
+    repeat (1000 * (count + 100)) @(posedge aclk);
+    $fatal(1, "MISMATCH no end within %0d cycles: a channel hangs", 1000 * (count + 100));
+  end
 
   integer i;
   initial begin
     read_vectors;
+    vectors_read = 1'b1;
     cycles(3);
     aresetn = 1'b1;
     cycles(1);

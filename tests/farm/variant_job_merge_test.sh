@@ -47,4 +47,12 @@ diff <(bash "$root/scripts/farm.sh" list layout --build "$scratch/build") - <<'E
 2	layout_exp2	variant_job	layout exp2 --shard 0/1
 3	layout_us5739820	variant_job	layout us5739820 --shard 0/1
 EOF
+# farm.sh's mutants regression (issue 46): the whole IP's two targets, 2 shards of 100 each,
+# after the device's groups.
+diff <(bash "$root/scripts/farm.sh" list mutants --build "$scratch/build" | grep -P '\trtl_mutants_specular_(reg_block|ip_axi)\t') - <<'EOF' || fail "farm.sh list mutants: not 2 shards per IP target"
+18	rtl_mutants_specular_reg_block	rtl_mutants	--target specular_reg_block --count 100 --seed 1 --shard 0/2
+19	rtl_mutants_specular_reg_block	rtl_mutants	--target specular_reg_block --count 100 --seed 1 --shard 1/2
+20	rtl_mutants_specular_ip_axi	rtl_mutants	--target specular_ip_axi --count 100 --seed 1 --shard 0/2
+21	rtl_mutants_specular_ip_axi	rtl_mutants	--target specular_ip_axi --count 100 --seed 1 --shard 1/2
+EOF
 echo "variant_job_merge_test.sh: PASS"

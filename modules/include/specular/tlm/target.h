@@ -122,7 +122,7 @@ class SpecularTarget : public sc_core::sc_module {
   /// The value check of a write: the ranges of the operand rows, CONTROL's reserved
   /// bits; ErrorCause::none when `value` is acceptable.
   ErrorCause check_value(Reg reg, std::uint32_t value) const;
-  /// The rule an address of `cause` address breaks (a hole, or beyond map_size).
+  /// The rule a refused address breaks: a hole, or beyond map_size.
   static const char* address_rule(std::uint64_t address);
   /// The rule a write to the read-only `row` breaks.
   static constexpr const char* read_only_rule = "a read-only register";

@@ -286,6 +286,19 @@ if [[ "$plant" == unrouted && $routed_before -eq 0 ]]; then   # every metal obst
   mv "$proj/$top.cfg.planted" "$proj/$top.cfg"
 fi
 
+# The clock nets first: the netlist has no clock tree, so clk is one net of some 300
+# flip-flop pins. Routed in its turn, it found the die full: exp2's qrouter run ended
+# stage 1 with clk alone unrouted and spent hours in stage 2 ripping it up. qrouter's
+# `priority` routes the nets named before all others (the nets on the flip-flops' CLK
+# pins in the placed netlist; braces keep a bus bit's brackets from Tcl).
+if [[ $routed_before -eq 0 ]] && ! grep -q '^priority' "$proj/$top.cfg"; then
+  clocks=$(grep -o 'CLK=[^ ]*' "$proj/$top.blif" | sed 's/^CLK=//' | sort -u | sed 's/.*/{&}/' | tr '\n' ' ')
+  if [[ -n "$clocks" ]]; then
+    awk -v p="priority $clocks" '{print} /^read_def/ {print p}' "$proj/$top.cfg" > "$proj/$top.cfg.clk"
+    mv "$proj/$top.cfg.clk" "$proj/$top.cfg"
+  fi
+fi
+
 # ---- routing (qrouter), wire R and C (rc2dly: SPEF, SDF) ---------------------------
 # router.sh leaves the routed DEF as TOP.def (the placed one is TOP_unroute.def) and the
 # routes' R and C as TOP.rc; rc2dly (qflow) turns those into SPEF for OpenSTA.

@@ -20,6 +20,16 @@ else, the other table and plots untouched) and, with --svg-dir,
 energy_vs_error.svg and energy_vs_area.svg (energy per result at the common clock, the random operands' mean, against
 the lobe's max |error| and against the die estimate, Pareto fronts marked).
 
+After layout (issue 48): --layout-dir DIR names the designs laid out, one folder each
+holding scripts/layout.sh's layout_summary.json (its top names the design) and, from
+energy.sh on the post-layout netlist, energy/energy.json (the farm's `layout` regression
+leaves them so). --layout-table FILE writes the table of each design before and after
+layout (die, T_sta, results/s per mm², energy per result) and, with --svg-dir,
+area_vs_error_layout.svg, throughput_vs_error_layout.svg and energy_vs_error_layout.svg:
+each laid-out design at its figure after layout with an arrow from its estimate, every
+other at its estimate (hollow), the Pareto fronts from those mixed figures. A layout that
+is not clean (an unrouted net, a DRC error, no LVS match) is left out, named on stderr.
+
 Writes the table (markdown, default RUNS_DIR/design_space_table.md; printed too) and,
 with --svg-dir, area_vs_error.svg (die estimate against the lobe's max |error|) and
 throughput_vs_error.svg (results/s streamed per mm² of die against the same error), the
@@ -67,6 +77,70 @@ def load(runs, errors):
     order = {"specular_device": 0, "specular_device_sync": 1, "specular_patent": 2}
     designs.sort(key=lambda d: (order.get(d["top"], 3), d["name"]))
     return designs
+
+
+def load_layouts(layout_dir):
+    """The designs after layout: name -> {"layout": layout_summary.json, "energy":
+    energy/energy.json or None}. A layout that is not clean is no figure: left out."""
+    out = {}
+    for entry in sorted(os.listdir(layout_dir)):
+        path = os.path.join(layout_dir, entry, "layout_summary.json")
+        if not os.path.isfile(path):
+            continue
+        with open(path) as f:
+            lay = json.load(f)
+        faults = [f"{k} {lay.get(k)}" for k in ("unrouted_nets", "drc_errors") if lay.get(k) != 0]
+        if lay.get("lvs_match") is not True:
+            faults.append("no LVS match")
+        if faults:
+            sys.stderr.write(f"design_space.py: {path}: not clean ({', '.join(faults)}): left out\n")
+            continue
+        energy = None
+        energy_file = os.path.join(layout_dir, entry, "energy", "energy.json")
+        if os.path.isfile(energy_file):
+            with open(energy_file) as f:
+                energy = json.load(f)
+        out[design_name(lay["top"])] = {"layout": lay, "energy": energy}
+    return out
+
+
+def after_layout(d, lay):
+    """A design's figures after layout (None where it has none): die (mm²), T_sta (ns),
+    results/s streamed per mm² of die at that T_sta, energy per result with the wires."""
+    if lay is None:
+        return {"die": None, "t_sta": None, "tput": None, "energy": None}
+    s, L = d["summary"], lay["layout"]
+    die, t_sta = L["die_area_mm2"], L.get("t_sta_ns")
+    cpr = s.get("clocks_per_result_streamed")
+    tput = 1e9 / (t_sta * cpr) / die if t_sta and cpr else None
+    energy = energy_figure(lay["energy"]) if lay["energy"] else None
+    return {"die": die, "t_sta": t_sta, "tput": tput, "energy": energy}
+
+
+def pick(after, before):
+    """The figure a front is drawn from: after layout where there is one."""
+    return [a if a is not None else b for a, b in zip(after, before)]
+
+
+def layout_table(designs, after, fronts):
+    """Each design before and after layout; the fronts from the mixed figures."""
+    arrow = lambda b, a, fmt: (f"{fmt(b)} → **{fmt(a)}**" if a is not None else fmt(b)) if b is not None else "—"
+    lines = ["| design | after layout | die (mm²): estimate → layout | T_sta (ns) | "
+             "results/s per mm² (M) | energy per result at 50 ns (pJ) | lobe max \\|err\\| | "
+             "Pareto (mixed figures) |",
+             "|---|---|---:|---:|---:|---:|---:|---|"]
+    for i, d in enumerate(designs):
+        s, e, a = d["summary"], d["error"] or {}, after[i]
+        before_energy = energy_figure(d["energy"]) if d["energy"] else None
+        marks = [m for m, f in fronts if i in f]
+        lines.append(
+            f"| {d['label']} | {'yes' if a['die'] is not None else 'no (estimate)'} | "
+            f"{arrow(s['die_area_estimate_mm2'], a['die'], lambda v: f'{v:.3f}')} | "
+            f"{arrow(s['t_sta_ns'], a['t_sta'], lambda v: f'{v:.2f}')} | "
+            f"{arrow(s['results_per_second_per_mm2_streamed'], a['tput'], lambda v: f'{v / 1e6:.2f}')} | "
+            f"{arrow(before_energy, a['energy'], lambda v: f'{v:.0f}')} | "
+            f"{sci(e.get('lobe_max_abs'))} | {', '.join(marks)} |")
+    return "\n".join(lines) + "\n"
 
 
 def pareto(points):
@@ -184,7 +258,11 @@ def times_table(designs):
     return "\n".join(lines) + "\n"
 
 
-def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where="post"):
+def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where="post",
+         origins=None, estimates=()):
+    """One plane, the front in red. origins: per design, the (x, y) it moved from (after
+    layout: its estimate) or None, drawn as a grey arrow; estimates: the designs whose
+    point is still an estimate, drawn hollow."""
     import matplotlib
     matplotlib.use("Agg")
     matplotlib.rcParams["svg.hashsalt"] = "specular-design-space"  # reproducible ids
@@ -195,8 +273,13 @@ def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where
         if xs[i] is None or ys[i] is None:
             continue
         on = i in front
+        colour = "tab:red" if on else "tab:blue"
         ax.scatter([xs[i]], [ys[i]], s=60 if on else 36, marker="o" if on else "s",
-                   color="tab:red" if on else "tab:blue", zorder=3)
+                   color=colour, facecolors="none" if i in estimates else colour, zorder=3)
+        if origins and origins[i] is not None and origins[i][0] is not None:
+            ax.annotate("", xy=(xs[i], ys[i]), xytext=origins[i], zorder=2,
+                        arrowprops=dict(arrowstyle="->", color="0.55", linewidth=0.8))
+            ax.scatter([origins[i][0]], [origins[i][1]], s=14, color="0.55", zorder=2)
         # labels of near points staggered (the devices sit on top of each other)
         ax.annotate(d["label"], (xs[i], ys[i]), textcoords="offset points",
                     xytext=(6, (4, -11, 15, -22)[i % 4]), fontsize=8)
@@ -204,6 +287,10 @@ def plot(designs, xs, ys, front, xlabel, ylabel, title, path, x_log=False, where
     if len(pts) > 1:
         ax.step([p[0] for p in pts], [p[1] for p in pts], where=where, color="tab:red",
                 linestyle="--", linewidth=1, label="Pareto front")
+    if estimates or origins:
+        ax.scatter([], [], s=36, marker="s", color="tab:blue", label="after layout")
+        ax.scatter([], [], s=36, marker="s", color="tab:blue", facecolors="none", label="estimate (not laid out)")
+    if len(pts) > 1 or estimates or origins:
         ax.legend(loc="best", fontsize=8)
     ax.set_yscale("log")
     ax.margins(x=0.2, y=0.15)
@@ -225,6 +312,8 @@ def main():
     p.add_argument("--table")
     p.add_argument("--svg-dir")
     p.add_argument("--energy-table")
+    p.add_argument("--layout-dir", help="designs after layout (layout_summary.json, energy/energy.json)")
+    p.add_argument("--layout-table", help="the table before and after layout (needs --layout-dir)")
     p.add_argument("--energy-only", action="store_true",
                    help="only the energy table and plots (the other table and plots untouched)")
     a = p.parse_args()
@@ -265,6 +354,49 @@ def main():
              "lobe max |error| (K(n)·cos^n, S10.20)",
              "Throughput per mm² against error (Pareto front: red)",
              os.path.join(a.svg_dir, "throughput_vs_error.svg"), x_log=True, where="pre")
+    if a.layout_table or a.layout_dir:
+        if not (a.layout_table and a.layout_dir):
+            p.error("--layout-table and --layout-dir go together")
+        if not os.path.isdir(a.layout_dir):
+            sys.stderr.write(f"design_space.py: --layout-dir '{a.layout_dir}' is not a folder\n")
+            return 1
+        layouts = load_layouts(a.layout_dir)
+        unknown = sorted(set(layouts) - {d["name"] for d in designs})
+        if unknown:
+            sys.stderr.write(f"design_space.py: laid out but not in {a.runs}: {', '.join(unknown)}\n")
+            return 1
+        after = [after_layout(d, layouts.get(d["name"])) for d in designs]
+        estimates = {i for i, x in enumerate(after) if x["die"] is None}
+        die_m = pick([x["die"] for x in after], die)
+        tput_b = [d["summary"]["results_per_second_per_mm2_streamed"] for d in designs]
+        tput_m = pick([x["tput"] for x in after], tput_b)
+        energy_b = [energy_figure(d["energy"]) if d["energy"] else None for d in designs]
+        energy_m = pick([x["energy"] for x in after], energy_b)
+        fronts = [("area", pareto(list(zip(die_m, err)))),
+                  ("throughput/mm²", pareto([(-t, e) for t, e in zip(tput_m, err)])),
+                  ("energy–error", pareto(list(zip(energy_m, err))))]
+        text = layout_table(designs, after, fronts)
+        with open(a.layout_table, "w") as f:
+            f.write(text)
+        print(text, end="")
+        if a.svg_dir:
+            moved = lambda xb, xa: [(b, e) if x is not None else None for b, x, e in zip(xb, xa, err)]
+            plot(designs, die_m, err, fronts[0][1], "die (mm², OSU 0.18 µm): after layout, or the estimate",
+                 "lobe max |error| (K(n)·cos^n, S10.20)", "Area against error after layout (Pareto front: red)",
+                 os.path.join(a.svg_dir, "area_vs_error_layout.svg"),
+                 origins=moved(die, [x["die"] for x in after]), estimates=estimates)
+            plot(designs, [t / 1e6 for t in tput_m], err, fronts[1][1],
+                 "results/s streamed per mm² of die (M, at T_sta): after layout, or the estimate",
+                 "lobe max |error| (K(n)·cos^n, S10.20)",
+                 "Throughput per mm² against error after layout (Pareto front: red)",
+                 os.path.join(a.svg_dir, "throughput_vs_error_layout.svg"), x_log=True, where="pre",
+                 origins=moved([t / 1e6 for t in tput_b], [x["tput"] for x in after]), estimates=estimates)
+            plot(designs, energy_m, err, fronts[2][1],
+                 "energy per result (pJ, random operands, 50 ns): after layout, or before",
+                 "lobe max |error| (K(n)·cos^n, S10.20)", "Energy against error after layout (Pareto front: red)",
+                 os.path.join(a.svg_dir, "energy_vs_error_layout.svg"),
+                 origins=moved(energy_b, [x["energy"] for x in after]),
+                 estimates={i for i, x in enumerate(after) if x["energy"] is None})
     if a.energy_table:
         have = [d for d in designs if d["energy"] is not None]
         if not have:

@@ -115,14 +115,26 @@ proj="$out/qflow"
 [[ $resume -eq 1 ]] || rm -rf "$proj"
 mkdir -p "$proj/source" "$proj/log"
 seconds() { date +%s.%N; }
-declare -a step_names=() step_times=()
+declare -a step_names=() step_times=() step_cpus=()
+# CPU seconds (user + system) of this shell's finished children: the second line of
+# `times`, run in this shell (in a pipe or $(...) it would report a fresh subshell's zero)
+children_cpu_file() {
+  times > "$proj/log/.times"
+}
 step_start=$(seconds)
-step_done() {  # step_done NAME: prints and keeps the step's wall time
+step_cpu_start=0
+step_done() {  # step_done NAME: prints and keeps the step's wall and CPU time
   local now; now=$(seconds)
   local dt; dt=$(printf '%.1f' "$(echo "$now - $step_start" | bc)")
-  step_names+=("$1"); step_times+=("$dt")
-  echo "layout.sh: $1 ${dt} s"
+  children_cpu_file
+  local cpu
+  cpu=$(awk 'NR == 2 {n = 0; for (i = 1; i <= 2; i++) {split($i, p, "m"); n += p[1] * 60 + p[2]} printf "%.1f", n}' \
+    "$proj/log/.times")
+  local dc; dc=$(printf '%.1f' "$(echo "$cpu - $step_cpu_start" | bc)")
+  step_names+=("$1"); step_times+=("$dt"); step_cpus+=("$dc")
+  echo "layout.sh: $1 ${dt} s (CPU ${dc} s)"
   step_start=$now
+  step_cpu_start=$cpu
 }
 
 # ---- the netlist: silicon.sh's, or made here --------------------------------------
@@ -457,6 +469,7 @@ fi
 {
   [[ $routed_before -eq 0 ]] || cat "$proj/log/routing_before_resume.txt"
   for i in "${!step_names[@]}"; do echo "${step_names[$i]}_s ${step_times[$i]}"; done
+  for i in "${!step_names[@]}"; do echo "${step_names[$i]}_cpu_s ${step_cpus[$i]}"; done
 } > "$out/times.txt"
 /usr/bin/python3 "$here/silicon/layout_report.py" "$out" "$top" "$utilisation" "$unrouted" \
   "$drc_errors" "$lvs_match" "$sta_note" || { echo "layout.sh: layout_report.py failed" >&2; exit 1; }
@@ -475,7 +488,7 @@ fi
 /usr/bin/python3 "$here/silicon/layout_svg.py" "$out" "$top" "$out/die.svg" > /dev/null \
   || echo "layout.sh: note: layout_svg.py could not draw the die" >&2
 step_done picture
-echo "picture_s ${step_times[-1]}" >> "$out/times.txt"
+printf 'picture_s %s\npicture_cpu_s %s\n' "${step_times[-1]}" "${step_cpus[-1]}" >> "$out/times.txt"
 
 verdict=0
 bare=$(/usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["nets_without_wire_in_def"])' "$out/layout_summary.json")

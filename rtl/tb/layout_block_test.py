@@ -10,7 +10,8 @@ scripts/layout.sh on it.
     LVS match; the layout holds the 10 cells of Fig. 2 (inverter 44, AND 40, NANDs 45-47,
     flip-flops 41-43, the two /Q inverters: written here from the figure, docs/silicon.md)
     and a BUFX2 from vdd per constant (the library has no tie cell), and a die no smaller
-    than their area (from the LEF, read here); some wire is routed.
+    than their area (from the LEF, read here); some wire is routed; times.txt gives each
+    step's CPU time beside its wall time, not zero for placement and routing.
   - PLANT = drc, lvs or unrouted: layout.sh --plant PLANT must exit 1 and name that
     fault on standard error (the checks can fail).
   - resume (no fault): after the layout above, the placed DEF and the netlists as
@@ -109,6 +110,13 @@ def main():
         fail(f"cell area {s['standard_cell_area_um2']} um^2, the LEF gives {cell_area}")
     if s["wire_length_total_um"] <= 0:
         fail("no wire routed")
+    # each step's wall and CPU time (the farm's model of a design's cost); graywolf and
+    # qrouter are child processes that ran, so their steps' CPU cannot be zero
+    times = dict(line.split() for line in open(f"{out}/times.txt"))
+    steps = [k[:-2] for k in times if k.endswith("_s") and not k.endswith("_cpu_s")]
+    missing = [k for k in steps if f"{k}_cpu_s" not in times]
+    if missing or not all(float(times.get(f"{k}_cpu_s", 0)) > 0 for k in ("placement", "routing")):
+        fail(f"times.txt without each step's CPU time, or none for placement and routing: {times}")
     print(f"PASS: control unit laid out: die {s['die_area_mm2']} mm^2, {sum(placed.values())} cells, "
           f"wire {s['wire_length_total_um']} um, DRC 0, LVS match, none unrouted")
     return check_resume(root, netlist, out) if resume else 0

@@ -10,13 +10,17 @@ it ("syntax error, unexpected '{'") and leaves the rest of the module unread, so
 timing would be silently wrong. Each such line becomes one assignment per bit, highest
 first; the file is rewritten in place, every other line unchanged (a netlist without
 such a line is left byte for byte). An item this reader does not know (neither
-name, name[i], name[h:l] nor a sized binary, hex or decimal constant) or sides of
+name[i], name[h:l], an escaped \\name [i] or \\name [h:l], nor a sized binary, hex or
+decimal constant) or sides of
 different widths stop it with exit 1, naming the line.
 """
 import re
 import sys
 
-ITEM = re.compile(r"^(\\?[\w$.]+)(?:\[(\d+)(?::(\d+))?\])?$")
+ITEM = re.compile(r"^([A-Za-z_$][\w$.]*)(?:\[(\d+)(?::(\d+))?\])?$")
+# an escaped identifier ends at white space, so its select follows a space:
+# `\mul.biased [64:61]` (us5739820's netlist); its bits keep the space
+ESCAPED = re.compile(r"^(\\\S+)\s+\[(\d+)(?::(\d+))?\]$")
 CONST = re.compile(r"^(\d+)'([bhd])([0-9a-fA-FxXzZ_]+)$")
 
 
@@ -29,13 +33,15 @@ def bits(item, line):
             raise SystemExit(f"netlist_assigns.py: x or z constant '{item}' in: {line.strip()}")
         value = int(digits, {"b": 2, "h": 16, "d": 10}[base])
         return [f"1'b{(value >> k) & 1}" for k in range(width - 1, -1, -1)]
-    m = ITEM.match(item)
+    m = ESCAPED.match(item) or ITEM.match(item)
     if not m or m.group(2) is None:
-        raise SystemExit(f"netlist_assigns.py: '{item}' is not name[i], name[h:l] or a sized constant in: {line.strip()}")
+        raise SystemExit(f"netlist_assigns.py: '{item}' is not name[i], name[h:l], \\name [i], "
+                         f"\\name [h:l] or a sized constant in: {line.strip()}")
     name, hi = m.group(1), int(m.group(2))
     lo = int(m.group(3)) if m.group(3) is not None else hi
     step = -1 if hi >= lo else 1
-    return [f"{name}[{k}]" for k in range(hi, lo + step, step)]
+    gap = " " if name.startswith("\\") else ""
+    return [f"{name}{gap}[{k}]" for k in range(hi, lo + step, step)]
 
 
 def side(text, line):

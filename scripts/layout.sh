@@ -217,12 +217,15 @@ if [[ $resume -eq 1 ]]; then
 else
 # ---- the netlist as qflow's synthesis would leave it: flat BLIF, Verilog, SPICE ------
 # Flattened (instance names keep their block: mul6._123_), constants as BUFX2 from
-# gnd/vdd, aliases merged (opt_clean -purge; no buffer is added).
+# gnd/vdd, aliases merged (opt_clean -purge; no buffer is added). An undefined bit (x:
+# us5739820's squarer drives a 32-bit product from a 31-bit square) is tied to 0
+# (setundef -zero): a cell pin needs a net, and 0 is one of the values an x allows.
 if ! yosys -q -l "$proj/log/prep_yosys.log" -p "read_liberty -lib $lib
 $bb
 read_verilog $netlist
 hierarchy -check -top $top
 flatten
+setundef -zero
 hilomap -singleton -hicell LOGIC1 O -locell LOGIC0 O
 opt_clean -purge
 tee -q -o $proj/log/prep_stat.txt stat

@@ -361,6 +361,17 @@ if ! grep -q '^Final: No failed routes' "$proj/log/route.log" && [[ -z "$unroute
 fi
 unrouted=${unrouted:-0}
 
+# ---- qrouter's dangling vias, and a pin it passed over on metal2 without a via ---------
+# (silicon/layout_repair.py says what it found on the device); the DEF magic reads is the
+# mended one, qrouter's own is kept as TOP_route_qrouter.def
+[[ $routed_before -eq 1 && -f "$proj/${top}_route_qrouter.def" ]] || cp "$proj/${top}_route.def" "$proj/${top}_route_qrouter.def"
+repair_lefs=("$OSU018/osu018_stdcells.lef")
+[[ -z "$macros_lef" ]] || repair_lefs+=("$proj"/source/macros/*.lef)
+/usr/bin/python3 "$here/silicon/layout_repair.py" "$proj/${top}_route_qrouter.def" "$proj/${top}_route.def" \
+  "$out/repairs.txt" "${repair_lefs[@]}" > "$proj/log/repair.log" \
+  || echo "layout.sh: note: layout_repair.py left a pin open; see $out/repairs.txt (LVS will say)" >&2
+sed 's/^layout_repair.py: /layout.sh: repaired: /' "$proj/log/repair.log"
+
 # ---- DRC and extraction (magic, abstract views) ------------------------------------
 lefs="lef read $OSU018/osu018_stdcells.lef"
 if [[ -n "$macros_lef" ]]; then
@@ -419,8 +430,11 @@ if [[ "$plant" == lvs ]]; then   # the first instance's first signal pin left op
 fi
 (cd "$proj" && netgen-lvs -batch lvs "${top}_layout.spice $top" "$top.spc $top" \
    "$OSU018/osu018_setup.tcl" "$out/lvs.txt" -blackbox) > "$proj/log/lvs.log" 2>&1 || true
+# a match: "Netlists match uniquely", or "Netlists match with N symmetries" (nets netgen
+# cannot tell apart by their connections, exp2's two; it pairs them by name and reports
+# "Circuits match uniquely")
 lvs_match=0
-if grep -q 'Netlists match uniquely' "$out/lvs.txt" 2>/dev/null \
+if grep -q 'Netlists match uniquely\|Netlists match with [0-9]* symmetr' "$out/lvs.txt" 2>/dev/null \
    && ! grep -qi 'Netlists do not match\|Top level cell failed' "$out/lvs.txt"; then
   lvs_match=1
 fi

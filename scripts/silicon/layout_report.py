@@ -127,6 +127,13 @@ def main():
         for line in open(f"{out}/times.txt"):
             k, v = line.split()
             times[k] = float(v)
+    # layout.sh's mending of qrouter's DEF (silicon/layout_repair.py), and netgen's symmetries
+    repairs = []
+    if os.path.exists(f"{out}/repairs.txt"):
+        repairs = [l for l in open(f"{out}/repairs.txt").read().splitlines()[2:] if l]
+    m = re.search(r"Netlists match with (\d+) symmetr", open(f"{out}/lvs.txt").read()) \
+        if os.path.exists(f"{out}/lvs.txt") else None
+    symmetries = int(m.group(1)) if m else 0
     summary = {
         "top": top,
         "die_um": [round(die_w, 2), round(die_h, 2)],
@@ -146,6 +153,8 @@ def main():
         "nets_without_wire_in_def": bare,
         "drc_errors": int(drc),
         "lvs_match": lvs == "1",
+        "lvs_symmetries": symmetries,
+        "repairs": repairs,
         "drc_lvs_views": "abstract (LEF): qflow-tech-osu018 has no cell GDS",
         "macros": macros,
         "blocks": block_list,
@@ -175,10 +184,13 @@ def main():
           f"| utilisation (cells over the standard-cell core; asked {util_asked}) | {summary['utilisation']:.3f} |",
           f"| wire length | {summary['wire_length_total_um'] / 1000:.1f} mm |",
           f"| unrouted nets | {unrouted} |", f"| DRC errors (abstract views) | {drc} |",
-          f"| LVS | {'match' if lvs == '1' else 'MISMATCH'} |",
+          f"| LVS | {'match' if lvs == '1' else 'MISMATCH'}"
+          f"{f' ({symmetries} symmetries)' if symmetries else ''} |",
+          f"| qrouter's DEF mended (layout_repair.py) | {len(repairs)} |",
           f"| T_sta after layout | {summary['t_sta_ns'] if summary['t_sta_ns'] else (sta_note or 'not run')} |", ""]
     if summary["worst_path"]:
         md += [f"Worst path: {summary['worst_path']['startpoint']} -> {summary['worst_path']['endpoint']}", ""]
+    md += [f"- {r}" for r in repairs] + ([""] if repairs else [])
     md += ["| step | s |", "|---|---:|"] + [f"| {k} | {v} |" for k, v in times.items()] + [""]
     md += ["| block | cells | centre (um) |", "|---|---:|---|"]
     md += [f"| {k} | {b['cells']} | {b['centre_um']} |" for k, b in block_list.items()]

@@ -189,11 +189,11 @@ def main():
         shapes, kind = [], []
         # metal2 wires (and via-only points): a pin with a metal2 port (XNOR2X1's A) is
         # reached there
-        metal2 = [r for _, layer, _, pts, _ in routes if layer == "metal2" and pts for r in segments(pts, 15)]
+        metal2_rects = [r for _, layer, _, pts, _ in routes if layer == "metal2" and pts for r in segments(pts, 15)]
         for label, rects, m2 in pins:
             for r in rects:
                 shapes.append(r); kind.append(("pin", label))
-            if any(touch(a, b) for a in m2 for b in metal2):
+            if any(touch(a, b) for a in m2 for b in metal2_rects):
                 shapes.append(rects[0]); kind.append(("via", ("metal2 port", label)))
         for i, layer, _, pts, via_at in routes:
             if layer == "metal1" and len(pts) > 1:

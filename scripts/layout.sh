@@ -325,9 +325,15 @@ if [[ $routed_before -eq 0 ]]; then
   fi
   cp "$proj/$top.def" "$proj/${top}_route.def"
 else
-  # the routing's wall time: from its script (TOP.cfg, written as it started) to its DEF
-  echo "routing_before_resume_s $(( $(stat -c %Y "$proj/${top}_route.def") - route_started ))" \
-    > "$proj/log/routing_before_resume.txt"
+  # the routing's wall time: from its script (TOP.cfg, written as it started) to its DEF;
+  # unknown when an earlier --resume of a moved copy rewrote TOP.cfg after the routing
+  routed_for=$(( $(stat -c %Y "$proj/${top}_route.def") - route_started ))
+  if (( routed_for >= 0 )); then
+    echo "routing_before_resume_s $routed_for" > "$proj/log/routing_before_resume.txt"
+  else
+    : > "$proj/log/routing_before_resume.txt"
+    echo "layout.sh: note: $top.cfg is newer than the routed DEF: the routing's wall time is unknown" >&2
+  fi
   if [[ -f "$proj/${top}_route.rc" ]]; then
     # qrouter run by hand: what router.sh does after it. The fill cells placement added
     # (fillcells.txt) go into the Verilog and SPICE netlists (annotate.tcl), so that they

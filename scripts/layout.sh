@@ -35,7 +35,8 @@
 #
 # OUT_DIR gets qflow/ (the project: TOP.def routed, TOP.spef, the tools' logs in
 # qflow/log/), drc.txt (magic's count and every error with its reason), lvs.txt (netgen),
-# instances.tsv (layout name -> netlist name), sta/ (post-layout reports, with
+# instances.tsv (layout name -> netlist name), repairs.txt (what silicon/layout_repair.py
+# mended in qrouter's DEF before DRC: lone vias, a pin passed over), sta/ (post-layout reports, with
 # sta_summary.txt), layout_summary.json and layout_report.md (die, utilisation, wire
 # length, DRC, LVS, unrouted nets, T_sta, each step's time), floorplan.txt (where the
 # macros went), die.png (KLayout) and die.svg (the blocks of Fig. 1 marked), and with
@@ -373,9 +374,14 @@ unrouted=${unrouted:-0}
 [[ $routed_before -eq 1 && -f "$proj/${top}_route_qrouter.def" ]] || cp "$proj/${top}_route.def" "$proj/${top}_route_qrouter.def"
 repair_lefs=("$OSU018/osu018_stdcells.lef")
 [[ -z "$macros_lef" ]] || repair_lefs+=("$proj"/source/macros/*.lef)
+repair_rc=0
 /usr/bin/python3 "$here/silicon/layout_repair.py" "$proj/${top}_route_qrouter.def" "$proj/${top}_route.def" \
-  "$out/repairs.txt" "${repair_lefs[@]}" > "$proj/log/repair.log" \
-  || echo "layout.sh: note: layout_repair.py left a pin open; see $out/repairs.txt (LVS will say)" >&2
+  "$out/repairs.txt" "${repair_lefs[@]}" > "$proj/log/repair.log" 2>&1 || repair_rc=$?
+case $repair_rc in
+  0) ;;
+  1) echo "layout.sh: note: layout_repair.py left a pin open; see $out/repairs.txt (LVS will say)" >&2 ;;
+  *) cat "$proj/log/repair.log" >&2; echo "layout.sh: layout_repair.py could not read the routed DEF" >&2; exit 1 ;;
+esac
 sed 's/^layout_repair.py: /layout.sh: repaired: /' "$proj/log/repair.log"
 
 # ---- DRC and extraction (magic, abstract views) ------------------------------------

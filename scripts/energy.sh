@@ -32,7 +32,9 @@
 #   --no-zero-delay     skip the zero-delay replay (no glitch share)
 #
 # OUT_DIR gets energy.json (the figures), energy.md (the table), sdf/ and zero/ (the
-# replays, energy_sdf.json, energy_zero.json, toggles_*.txt) and slews.txt.
+# replays, energy_sdf.json, energy_zero.json, toggles_*.txt; after layout also
+# wire_switching_*.txt: each wired net's wire, toggles and the wire's own 1/2 C V^2 energy,
+# the largest first, and energy_*.json's wire_switching_pj) and slews.txt.
 # Exit status: 0 written, 1 a tool or a replay failed, 2 bad arguments.
 set -euo pipefail
 
@@ -175,7 +177,7 @@ for mode in "${modes[@]}"; do
     --lib "$netlist_dir/rom_macros.lib" --netlist "$netlist_dir/mapped.v" --top "$top" \
     --tb-top "$TB_TOP" --vcd "$out/$mode/activity.vcd" --slews "$out/slews.txt" \
     --rom-model "$netlist_dir/rom_model.json" "${strobe[@]}" \
-    "${counter_opts[@]}" "${wire_opts[@]}" --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
+    "${counter_opts[@]}" "${wire_opts[@]}" ${wire_opts:+--wire-out "$out/wire_switching_$mode.txt"} --toggles-out "$out/toggles_$mode.txt" --out "$out/energy_$mode.json" \
     || { echo "energy.sh: counting the $mode activity failed" >&2; exit 1; }
   echo "count_s $((SECONDS - started))" >> "$out/$mode/time.txt"
   echo "vcd_bytes $(stat -c %s "$out/$mode/activity.vcd")" >> "$out/$mode/time.txt"

@@ -20,7 +20,8 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
 - wire_cap: the chain with 0.010 pF of wire on n1 and 0.005 pF on n2 (energy.py
   --wire-cap, the routed wires of scripts/layout.sh): both loads grow by their wire, in
   the switching energy and in u1's and u2's internal-power lookups; a net the netlist
-  lacks is counted as unknown.
+  lacks is counted as unknown; the wires' own switching (K x 1/2 C_wire V^2 each) is
+  wire_switching_pj, and --wire-out lists n1 then n2 with their wire, toggles and share.
 - wire_cap_implicit: the same with n1 and n2 not declared, as qflow's flat netlist after
   layout leaves every internal net (Verilog's implicit one-bit wires): the same figures.
   (energy.py once took an undeclared net for bit 0 of a bus and matched 329 of the laid-
@@ -217,7 +218,9 @@ def check_wire_cap(energy_py, osu, scratch, implicit=False):
     wire_file = os.path.join(d, "wire_cap.txt")
     with open(wire_file, "w") as f:
         f.write("".join(f"{n} {c}\n" for n, c in wires.items()) + "no_such_net 0.5\n")
-    e, t = compute(energy_py, osu, net, "chain", vcd, slews, d, "energy_wire", extra=("--wire-cap", wire_file))
+    wire_out = os.path.join(d, "wire_switching.txt")
+    e, t = compute(energy_py, osu, net, "chain", vcd, slews, d, "energy_wire",
+                   extra=("--wire-cap", wire_file, "--wire-out", wire_out))
     cap, leak, rise, fall = liberty_invx1(osu)
     loads = [cap + wires["n1"], cap + wires["n2"], 0.0]
     internal = sum(K // 2 * interpolate(rise, c) + K // 2 * interpolate(fall, c) for c in loads)
@@ -227,6 +230,16 @@ def check_wire_cap(energy_py, osu, scratch, implicit=False):
     if e["wire_cap_nets"] != 2 or e["wire_cap_unknown_nets"] != 1:
         print(f"FAIL: wire nets matched {e['wire_cap_nets']}, unknown {e['wire_cap_unknown_nets']}; want 2 and 1")
         return 1
+    # the wires' own share: K toggles x 1/2 C_wire V^2 per net, n1 (more wire) first
+    own = {n: K * 0.5 * c * VDD * VDD for n, c in wires.items()}
+    close(e.get("wire_switching_pj", -1.0), sum(own.values()), what="the wires' own switching (pJ)")
+    rows = [l.split() for l in open(wire_out) if not l.startswith("#")]
+    if [r[0] for r in rows] != ["n1", "n2"] or [int(r[2]) for r in rows] != [K, K]:
+        print(f"FAIL: {wire_out}: want n1 then n2 with {K} toggles each, got {rows}")
+        return 1
+    for r in rows:
+        close(float(r[1]), wires[r[0]], what=f"{r[0]}'s wire (pF)")
+        close(float(r[3]), own[r[0]], what=f"{r[0]}'s own switching (pJ)")
     print(f"PASS wire capacitance: internal {internal:.5f} pJ, switching {switching:.5f} pJ with "
           f"{sum(wires.values())} pF of wire, as computed by hand")
     return 0

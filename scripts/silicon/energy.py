@@ -652,6 +652,7 @@ def compute(args):
     # pins' (a file of "NET PF" lines, NET a top-level net of the flat netlist or
     # a/b/net through instances, bus bits as net[3])
     wire_pf, wire_nets, wire_unknown = 0.0, 0, []
+    wire_load, wire_name = defaultdict(float), {}   # per global net: its wire alone, a name
     if args.wire_cap:
         known = set(parent_keys_of(modules, args.top))
         for line in open(args.wire_cap):
@@ -664,6 +665,8 @@ def compute(args):
                 wire_unknown.append(p[0])
                 continue
             load[find(k)] += float(p[1])
+            wire_load[find(k)] += float(p[1])
+            wire_name.setdefault(find(k), p[0])
             wire_pf += float(p[1])
             wire_nets += 1
     slews = {}
@@ -749,6 +752,9 @@ def compute(args):
         t = rises[net] + falls[net]
         toggles += t
         switching += t * 0.5 * load[net] * VDD * VDD
+    # the wires' own share of the switching (issue 48: which nets' share grew), per net by
+    # the layout's name, so that aliases (a port and the net it joins) count once
+    wire_switching = {net: (rises[net] + falls[net]) * 0.5 * c * VDD * VDD for net, c in wire_load.items()}
     leak_nw = sum(lib.cells[c]["leakage_nw"] for _, c, _, _ in leaves)
     rom_reads = {g: reads[g] for g in groups}
     rom_pj = sum(reads[g] * read_vcd.groups_energy[g] for g in groups)
@@ -766,7 +772,13 @@ def compute(args):
         "cells": len(leaves),
         "wire_cap_pf": wire_pf, "wire_cap_nets": wire_nets,
         "wire_cap_unknown_nets": len(wire_unknown),
+        "wire_switching_pj": sum(wire_switching.values()),
     }
+    if args.wire_out:
+        with open(args.wire_out, "w") as f:
+            f.write("# net wire_pf toggles wire_switching_pj (the whole run; the largest first)\n")
+            for net in sorted(wire_switching, key=lambda n: (-wire_switching[n], wire_name[n])):
+                f.write(f"{wire_name[net]} {wire_load[net]:.6g} {rises[net] + falls[net]} {wire_switching[net]:.6g}\n")
     if args.toggles_out:
         with open(args.toggles_out, "w") as f:
             for net in sorted(nets, key=str):
@@ -1007,6 +1019,7 @@ def main():
     c.add_argument("--t-begin", type=float, default=0.0)
     c.add_argument("--toggles-out")
     c.add_argument("--wire-cap", help="NET PF lines: routed wire capacitance per net (scripts/layout.sh)")
+    c.add_argument("--wire-out", help="write each wired net's wire, toggles and the wire's own switching energy")
     c.add_argument("--counter", help="tools/vcd_activity/specular_vcd_activity: count with it "
                    "(the same rules as this file's reader, which counts without it)")
     c.add_argument("--out", required=True)

@@ -10,7 +10,11 @@ here from that geometry:
     crosses it, at (302.00, 4.00) um;
   - n_extra: both pins reached, one more via whose pad touches nothing: it goes, nothing
     is added;
-  - n_lost: U3's B has no wire near it: left open, named, exit 1.
+  - n_lost: U3's B has no wire near it: left open, named, exit 1;
+  - n_split: two pieces, U1's A up to a metal3 wire that ends at (200.40, 15.00) um on
+    the metal2 rising from U2's A, with no via there (qrouter's fault on schlick_divider):
+    a via M3_M2 comes at that point; U1's A to U2's B, joined on metal2 through vias at
+    both ends, gets nothing.
 Without n_lost the run exits 0; run again on its own output it changes nothing.
 
   layout_repair_test.py LAYOUT_REPAIR_PY OSU018_DIR SCRATCH
@@ -50,6 +54,23 @@ N_LOST = """- n_lost
 + ROUTED metal1 ( 10140 450 ) M2_M1
   NEW metal2 ( 10140 450 ) ( * 3000 ) ;
 """
+N_SPLIT = """- n_split
+  ( U1 A )
+  ( U2 A )
++ ROUTED metal1 ( 10040 530 ) M2_M1
+  NEW metal2 ( 10040 530 ) ( * 1500 ) M3_M2
+  NEW metal3 ( 10040 1500 ) ( 20040 * )
+  NEW metal1 ( 20040 530 ) M2_M1
+  NEW metal2 ( 20040 530 ) ( * 2000 ) ;
+"""
+N_WHOLE = """- n_whole
+  ( U1 A )
+  ( U2 B )
++ ROUTED metal1 ( 10040 530 ) M2_M1
+  NEW metal2 ( 10040 530 ) ( * 3500 ) M3_M2
+  NEW metal3 ( 10040 3500 ) ( 20140 * ) M3_M2
+  NEW metal2 ( 20140 3500 ) ( * 450 ) M2_M1 ;
+"""
 
 
 def write_def(path, nets):
@@ -75,7 +96,7 @@ def main():
     if "n_lost: pin U3/B is open" not in rep:
         fails.append(f"the pin left open is not named:\n{rep}")
 
-    write_def(f"{scratch}/fix.def", [N_EXTRA, N_OPEN])
+    write_def(f"{scratch}/fix.def", [N_EXTRA, N_OPEN, N_SPLIT, N_WHOLE])
     rc, out, rep = run(f"{scratch}/fix.def", f"{scratch}/fix_out.def", f"{scratch}/fix.txt")
     text = open(f"{scratch}/fix_out.def").read() if os.path.exists(f"{scratch}/fix_out.def") else ""
     if rc != 0:
@@ -85,6 +106,8 @@ def main():
         "NEW metal1 ( 30200 400 ) M2_M1 ;",                               # one on U3's C
         "NEW metal2 ( 10040 530 ) ( * 1500 ) ( 20040 * ) ( * 530 ) M2_M1",  # kept: on U2's A
         "+ ROUTED metal1 ( 10200 630 ) M2_M1",                            # kept: on U1's C
+        "NEW metal2 ( 20040 1500 ) M3_M2 ;",                              # n_split's two pieces joined
+        "NEW metal2 ( 20140 3500 ) ( * 450 ) M2_M1 ;",                    # n_whole: nothing added
     ]
     lines = [l.strip() for l in text.splitlines()]
     for e in expect_lines:
@@ -94,8 +117,11 @@ def main():
         fails.append("the via touching nothing at (150.00, 25.00) um is still there")
     if any("( 30200 * ) ( 30120 * ) M2_M1" in l for l in lines):
         fails.append("the via beside U3's C is still there")
-    if not rep.startswith("repairs 3\nleft_open 0\n"):
-        fails.append(f"report: expected 3 repairs (two vias out, one in), none left open:\n{rep}")
+    if not rep.startswith("repairs 4\nleft_open 0\n"):
+        fails.append(f"report: expected 4 repairs (two vias out, one on a pin, one between metals), "
+                     f"none left open:\n{rep}")
+    if "n_split: its metal2 and metal3 meet at (200.40, 15.00) um" not in rep:
+        fails.append(f"n_split's missing via is not named at (200.40, 15.00) um:\n{rep}")
 
     rc, out, rep = run(f"{scratch}/fix_out.def", f"{scratch}/again.def", f"{scratch}/again.txt")
     if rc != 0 or not rep.startswith("repairs 0\n") or open(f"{scratch}/again.def").read() != text:

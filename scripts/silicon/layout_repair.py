@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Mend the one fault qrouter 1.4.71 leaves in a routing it calls complete.
+"""Mend the faults qrouter 1.4.71 leaves in a routing it calls complete.
 
   layout_repair.py ROUTED_DEF OUT_DEF REPORT LEF [LEF...]
 
@@ -17,6 +17,12 @@ metal1 stubs in SPECIALNETS, the metal1 pads of its vias):
     wires crosses it, a via is put on the pin, at the point of the wire nearest the
     pin's centre.
 A pin open with no metal2 wire across it is listed and left: LVS will then fail and say so.
+
+And on every metal, after those: a wire of the net that ends on a wire of the metal above or below,
+of the same net but of another piece of its routing (the pieces joined by wires, vias and
+the cells' pins), with no via there, gets the via. Why: on schlick_divider qrouter ended
+a metal3 wire over the metal2 of a pin's via stack and put no M3_M2 there; the net came
+out in two pieces, and netgen found a net too many.
 REPORT lists each change; the exit status is 0 whether or not anything changed, 1 when a
 pin is left open, 2 when an input cannot be read.
 """
@@ -102,6 +108,82 @@ def parse_routes(lines, first, last):
     return out
 
 
+def via_layers(name):
+    """The metals a via joins (lower, upper) from its name (M3_M2), or None."""
+    m = re.fullmatch(r"M(\d)_M(\d)", name)
+    return (f"metal{m.group(2)}", f"metal{m.group(1)}") if m and int(m.group(1)) == int(m.group(2)) + 1 else None
+
+
+def on_segment(seg, p):
+    _, a, b = seg
+    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(a[1], b[1])
+
+
+def layer_breaks(routes, pins, stubs):
+    """The vias a net's routing lacks: (lower metal, upper metal, point) where a wire's end
+    lies on a wire one metal up or down that belongs to another piece of the net (pieces
+    joined by touching shapes on one metal, by vias, by a cell pin's metal1 or metal2 and by
+    qrouter's stubs in SPECIALNETS). None judged when
+    the net has a via this script does not know the metals of."""
+    segs = []
+    vias = []
+    for _, layer, _, pts, via_at in routes:
+        if pts:
+            segs += [(layer, pts[0], pts[0])] + [(layer, a, b) for a, b in zip(pts, pts[1:])]
+        for v, p in via_at:
+            if via_layers(v) is None:
+                return []
+            vias.append((via_layers(v), p))
+    # a via's pads are shapes of both its metals (the lower one may land on a pin alone)
+    segs += [(layer, p, p) for layers, p in vias for layer in layers]
+    n = len(segs)
+    parent = list(range(n + len(pins)))
+
+    def find(a):
+        while parent[a] != a:
+            parent[a] = parent[parent[a]]
+            a = parent[a]
+        return a
+    # joined where their shapes touch: a wire 0.3 um wide, a via's pad 0.4 um; grown to
+    # 0.4 um all (qrouter lands a via 0.2 um off its track on an off-grid pin)
+    rect = [segments([s[1], s[2]] if s[1] != s[2] else [s[1]], 20)[0] for s in segs]
+    ends = [(k, p) for k, s in enumerate(segs) for p in (s[1], s[2])]
+    for k in range(n):
+        for j in range(k):
+            if segs[j][0] == segs[k][0] and touch(rect[j], rect[k]):
+                parent[find(k)] = find(j)
+    # a shape touching a pin (the cell joins it to the pin's other wires), or a stub of
+    # SPECIALNETS touching either, on the same metal
+    stub_nodes = list(range(n + len(pins), n + len(pins) + len(stubs)))
+    parent += stub_nodes
+    pin_shapes = [(q, layer, r) for q, (_, m1, m2) in enumerate(pins)
+                  for layer, rects in (("metal1", m1), ("metal2", m2)) for r in rects]
+    for k, s in enumerate(segs):
+        for q, layer, pr in pin_shapes:
+            if s[0] == layer and touch(rect[k], pr):
+                parent[find(k)] = find(n + q)
+        for q, (layer, st) in enumerate(stubs):
+            if s[0] == layer and touch(rect[k], st):
+                parent[find(k)] = find(stub_nodes[q])
+    for q, (layer, st) in enumerate(stubs):
+        for p_, pin_layer, pr in pin_shapes:
+            if layer == pin_layer and touch(st, pr):
+                parent[find(stub_nodes[q])] = find(n + p_)
+    for layers, p in vias:
+        at = [j for j, t in enumerate(segs) if t[0] in layers and touch(rect[j], (p[0], p[1], p[0], p[1]))]
+        for j in at[1:]:
+            parent[find(j)] = find(at[0])
+    metal = lambda layer: int(layer[5:])
+    out = []
+    for k, p in ends:
+        for j, t in enumerate(segs):
+            if abs(metal(t[0]) - metal(segs[k][0])) == 1 and find(j) != find(k) and on_segment(t, p):
+                lo, hi = sorted((segs[k][0], t[0]), key=metal)
+                out.append((lo, hi, p))
+                parent[find(j)] = find(k)
+    return out
+
+
 def segments(pts, half):
     """A path's rectangles, each segment grown by half the wire's width."""
     if len(pts) == 1:
@@ -163,12 +245,16 @@ def main():
                 return 2
             placed[m.group(1)] = (m.group(2), (int(m.group(3)), int(m.group(4))), m.group(5))
     stubs = {}   # qrouter's metal1 stubs to off-grid pins (SPECIALNETS), by net
+    stubs_any = {}   # and its stubs on any metal: (layer, rectangle)
     ss, se = section(lines, "SPECIALNETS")
     if ss is not None:
         for name, first, last in net_blocks(lines, ss, se):
             for _, layer, width, pts, _ in parse_routes(lines, first, last):
-                if layer == "metal1" and pts:
-                    stubs.setdefault(name, []).extend(segments(pts, (width or 30) // 2))
+                if pts:
+                    rects = segments(pts, (width or 30) // 2)
+                    stubs_any.setdefault(name, []).extend((layer, r) for r in rects)
+                    if layer == "metal1":
+                        stubs.setdefault(name, []).extend(rects)
     ns, ne = section(lines, "NETS")
     drop, add, notes, left_open = {}, {}, [], 0
     for name, first, last in net_blocks(lines, ns, ne):
@@ -259,6 +345,11 @@ def main():
             else:
                 left_open += 1
                 notes.append(f"{name}: pin {label} is open and no metal2 wire of the net crosses it: left")
+        for lo, hi, (x, y) in layer_breaks(routes, pins, stubs_any.get(name, [])):
+            via = f"M{hi[5:]}_M{lo[5:]}"
+            add.setdefault(last, []).append(f"  NEW {lo} ( {x} {y} ) {via}")
+            notes.append(f"{name}: its {lo} and {hi} meet at ({x / 100:.2f}, {y / 100:.2f}) um, two pieces "
+                         f"of the net with no via between them; via {via} put there")
     out = []
     for i, l in enumerate(lines):
         for v, x, y in drop.get(i, []):

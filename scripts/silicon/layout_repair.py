@@ -146,7 +146,7 @@ def layer_breaks(routes, pins, stubs):
         return a
     # joined where their shapes touch: a wire 0.3 um wide, a via's pad 0.4 um; grown to
     # 0.4 um all (qrouter lands a via 0.2 um off its track on an off-grid pin)
-    rect = [segments([s[1], s[2]] if s[1] != s[2] else [s[1]], 20)[0] for s in segs]
+    rect = [segments([s[1], s[2]], 20)[0] for s in segs]
     ends = [(k, p) for k, s in enumerate(segs) for p in (s[1], s[2])]
     for k in range(n):
         for j in range(k):

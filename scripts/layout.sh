@@ -23,6 +23,12 @@
 #                      below the 0.3 um minimum width, painted beside the cells), lvs (one
 #                      pin of one instance of the mapped netlist left open after layout),
 #                      unrouted (every metal obstructed before routing)
+#   --no-cleanup       end qrouter's routing once stage 2 has routed every net: its
+#                      stage 3 (each net ripped up and routed again, shorter, two rounds)
+#                      is left out. On one_pass_pipelined (31 680 nets) stage 1 and 2
+#                      took 77 min at density 0.45 and stage 3 was still on its first
+#                      round after 50 min more (docs/silicon.md); layout_summary.json says
+#                      which ran (router_stage3)
 #   --resume           keep OUT_DIR/qflow and go on after its last finished step: after
 #                      its placement (graywolf takes tens of minutes on the whole device),
 #                      or, when a routed DEF, its R and C and a route log newer than the
@@ -62,6 +68,7 @@ netlist=""
 rom_dir=""
 utilisation=0.6
 sta=1
+cleanup=1
 resume=0
 routed_before=0
 plant=""
@@ -70,6 +77,7 @@ while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --no-sta) sta=0; shift ;;
+    --no-cleanup) cleanup=0; shift ;;
     --resume) resume=1; shift ;;
     --top|--netlist-dir|--netlist|--utilisation|--plant|--rom-dir)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
@@ -312,6 +320,17 @@ if [[ $routed_before -eq 0 ]] && ! grep -q '^priority' "$proj/$top.cfg"; then
   if [[ -n "$clocks" ]]; then
     awk -v p="priority $clocks" '{print} /^read_def/ {print p}' "$proj/$top.cfg" > "$proj/$top.cfg.clk"
     mv "$proj/$top.cfg.clk" "$proj/$top.cfg"
+  fi
+fi
+
+# --no-cleanup: qflow's script calls `qrouter::standard_route FILE false` (do not quit);
+# its third argument, nocleanup, skips stage 3 (a --resume without the option puts it back)
+if [[ $routed_before -eq 0 ]]; then
+  sed -i 's/^\(qrouter::standard_route [^ ]*\) false true$/\1 false/' "$proj/$top.cfg"
+  if [[ $cleanup -eq 0 ]]; then
+    sed -i 's/^\(qrouter::standard_route [^ ]*\) false$/\1 false true/' "$proj/$top.cfg"
+    grep -q '^qrouter::standard_route [^ ]* false true$' "$proj/$top.cfg" \
+      || { echo "layout.sh: --no-cleanup: no 'qrouter::standard_route FILE false' line in $proj/$top.cfg" >&2; exit 1; }
   fi
 fi
 

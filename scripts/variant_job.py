@@ -14,12 +14,14 @@
       scripts/energy.sh --top specular_NAME into energy/NAME beside the partials' folder
       (the run's folder): the mapping, the SDF and zero-delay replays, the energy per
       result (issue 36); NAME may also be device or device_sync (the two device tops)
-  specular_variant_job layout NAME --shard 0/1 --partial FILE
+  specular_variant_job layout NAME [--utilisation U] [--no-cleanup] --shard 0/1 --partial FILE
       the design after layout (issue 48): scripts/layout.sh --top specular_NAME (its own
       silicon.sh --no-gatesim, then placement, routing, DRC, LVS, SPEF, post-layout STA)
       into layout/NAME beside the partials' folder, then scripts/energy.sh on its
       postlayout/ (each net weighed by its pins and its routed wire) into layout/NAME/energy;
-      NAME may be device or device_sync. Hours per design (docs/silicon.md, "Layout")
+      NAME may be device or device_sync; --utilisation and --no-cleanup go to layout.sh
+      (the placement's density, qrouter's stage 3 left out: farm.sh gives
+      one_pass_pipelined both). Hours per design (docs/silicon.md, "Layout")
   specular_variant_job --merge FILE...
       one complete set (same job, every shard 0..N-1 once), every shard passed: exit 0
 
@@ -51,7 +53,7 @@ def parse_shard(text):
     return int(m.group(1)), int(m.group(2))
 
 
-def run_job(build, job, name, shard, partial):
+def run_job(build, job, name, shard, partial, layout_options):
     index, count = shard
     env = dict(os.environ)
     started = time.time()
@@ -87,7 +89,7 @@ def run_job(build, job, name, shard, partial):
     elif job == "layout":
         if count != 1:
             die("layout is one task: --shard 0/1")
-        summary = run_layout(build, name, partial)
+        summary = run_layout(build, name, partial, layout_options)
     else:
         if count != 1:
             die("silicon is one task: --shard 0/1")
@@ -111,17 +113,19 @@ def run_job(build, job, name, shard, partial):
     return 0 if summary["exit"] == 0 else 1
 
 
-def run_layout(build, name, partial):
-    """layout.sh, then energy.sh on its post-layout netlist: the summary of both."""
+def run_layout(build, name, partial, options):
+    """layout.sh (with OPTIONS), then energy.sh on its post-layout netlist: the summary of
+    both."""
     out = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(partial))), "layout", name)
     rom = os.path.join(build, "rtl", "rom", "default")
     steps = {}
     started = time.time()
     layout = subprocess.run(["bash", os.path.join(ROOT, "scripts", "layout.sh"), "--top", "specular_" + name,
-                             "--rom-dir", rom, out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                             "--rom-dir", rom] + options + [out], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     sys.stdout.write(layout.stdout)
     steps["layout_wall_seconds"] = round(time.time() - started, 1)
-    summary = {"exit": layout.returncode, "passed_tests": 0, "out": out, "steps": steps}
+    summary = {"exit": layout.returncode, "passed_tests": 0, "out": out, "layout_options": options,
+               "steps": steps}
     figures = os.path.join(out, "layout_summary.json")
     if os.path.exists(figures):
         with open(figures) as f:
@@ -208,21 +212,33 @@ def main(argv):
     if not rest or rest[0].startswith("--"):
         die("%s needs a variant's NAME" % job)
     name, rest = rest[0], rest[1:]
-    shard, partial = (0, 1), None
+    shard, partial, layout_options = (0, 1), None, []
     while rest:
-        if rest[0] in ("--shard", "--partial") and len(rest) >= 2:
+        if rest[0] == "--no-cleanup":
+            if job != "layout":
+                die("--no-cleanup is an option of layout, not of %s" % job)
+            layout_options.append("--no-cleanup")
+            rest = rest[1:]
+        elif rest[0] in ("--shard", "--partial", "--utilisation") and len(rest) >= 2:
             if rest[0] == "--shard":
                 shard = parse_shard(rest[1])
-            else:
+            elif rest[0] == "--partial":
                 partial = rest[1]
+            else:
+                if job != "layout":
+                    die("--utilisation is an option of layout, not of %s" % job)
+                if not re.fullmatch(r"0?\.\d+", rest[1]) or not 0.2 <= float(rest[1]) <= 0.9:
+                    die("--utilisation: '%s' is not a density from 0.2 to 0.9" % rest[1])
+                layout_options += ["--utilisation", rest[1]]
             rest = rest[2:]
         else:
-            die("unknown or incomplete option '%s' (allowed: --shard I/N, --partial FILE)" % rest[0])
+            die("unknown or incomplete option '%s' (allowed: --shard I/N, --partial FILE, "
+                "--utilisation U and --no-cleanup for layout)" % rest[0])
     if partial is None:
         die("--partial FILE is needed (the farm's merge reads it)")
     if not re.fullmatch(r"[a-z0-9_]+", name):
         die("'%s' is not a variant's name" % name)
-    return run_job(build, job, name, shard, partial)
+    return run_job(build, job, name, shard, partial, layout_options)
 
 
 if __name__ == "__main__":

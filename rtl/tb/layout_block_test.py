@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """layout_block: scripts/layout.sh lays out Fig. 2's control unit end to end (issue 48).
 
-  layout_block_test.py PROJECT_ROOT SCRATCH [PLANT]
+  layout_block_test.py PROJECT_ROOT SCRATCH [PLANT|resume|no-cleanup]
 
 Maps control_unit16 onto the OSU 0.18 um cells with Yosys as scripts/silicon.sh does
 (Fig. 2's gates kept as the library cells of scripts/silicon/fig2_cells.v), then runs
@@ -11,7 +11,10 @@ scripts/layout.sh on it.
     flip-flops 41-43, the two /Q inverters: written here from the figure, docs/silicon.md)
     and a BUFX2 from vdd per constant (the library has no tie cell), and a die no smaller
     than their area (from the LEF, read here); some wire is routed; times.txt gives each
-    step's CPU time beside its wall time, not zero for placement and routing.
+    step's CPU time beside its wall time, not zero for placement and routing; qrouter ran
+    its stage 3 (route log and router_stage3 in the summary).
+  - no-cleanup: the same with layout.sh --no-cleanup: as clean, and qrouter's log says
+    stage 3 was bypassed and never ran (router_stage3 false).
   - PLANT = drc, lvs or unrouted: layout.sh --plant PLANT must exit 1 and name that
     fault on standard error (the checks can fail).
   - resume (no fault): after the layout above, the placed DEF and the netlists as
@@ -42,15 +45,15 @@ def fail(msg):
 
 def main():
     if len(sys.argv) not in (3, 4):
-        print("usage: layout_block_test.py PROJECT_ROOT SCRATCH [drc|lvs|unrouted|resume]")
+        print("usage: layout_block_test.py PROJECT_ROOT SCRATCH [drc|lvs|unrouted|resume|no-cleanup]")
         return 2
     root, scratch = sys.argv[1], sys.argv[2]
     plant = sys.argv[3] if len(sys.argv) == 4 else ""
-    resume = plant == "resume"
-    if resume:
+    resume, no_cleanup = plant == "resume", plant == "no-cleanup"
+    if resume or no_cleanup:
         plant = ""
     if plant and plant not in FAULT_WORDS:
-        print(f"layout_block_test.py: '{plant}' is not one of drc, lvs, unrouted, resume")
+        print(f"layout_block_test.py: '{plant}' is not one of drc, lvs, unrouted, resume, no-cleanup")
         return 2
     shutil.rmtree(scratch, ignore_errors=True)
     os.makedirs(scratch)
@@ -68,6 +71,8 @@ def main():
     cmd = ["bash", f"{root}/scripts/layout.sh", "--netlist", netlist, "--top", "control_unit16"]
     if plant:
         cmd += ["--plant", plant]
+    if no_cleanup:
+        cmd += ["--no-cleanup"]
     out = f"{scratch}/layout"
     r = subprocess.run(cmd + [out], capture_output=True, text=True)
     print(r.stdout[-2000:], r.stderr[-2000:])
@@ -110,6 +115,15 @@ def main():
         fail(f"cell area {s['standard_cell_area_um2']} um^2, the LEF gives {cell_area}")
     if s["wire_length_total_um"] <= 0:
         fail("no wire routed")
+    # qrouter's stage 3, as its own log tells (the control unit routes in stage 1, after
+    # which standard_route runs stage 3 unless told not to)
+    log = open(f"{out}/qflow/log/route.log").read()
+    ran, bypassed = "Running stage3" in log, "Cleanup stage (stage3) bypassed" in log
+    if (ran, bypassed) != ((False, True) if no_cleanup else (True, False)):
+        fail(f"qrouter's stage 3 {'ran' if ran else 'did not run'}, bypassed: {bypassed} "
+             f"(--no-cleanup {'given' if no_cleanup else 'not given'})")
+    if s["router_stage3"] is not (not no_cleanup):
+        fail(f"layout_summary.json router_stage3 {s['router_stage3']}, qrouter's log: stage 3 ran {ran}")
     # each step's wall and CPU time (the farm's model of a design's cost); graywolf and
     # qrouter are child processes that ran, so their steps' CPU cannot be zero
     times = dict(line.split() for line in open(f"{out}/times.txt"))

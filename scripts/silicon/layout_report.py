@@ -134,6 +134,9 @@ def main():
     m = re.search(r"Netlists match with (\d+) symmetr", open(f"{out}/lvs.txt").read()) \
         if os.path.exists(f"{out}/lvs.txt") else None
     symmetries = int(m.group(1)) if m else 0
+    # qrouter's stage 3 (the clean-up reroute), left out by layout.sh --no-cleanup
+    route_log = f"{proj}/log/route.log"
+    stage3 = "Running stage3" in open(route_log).read() if os.path.exists(route_log) else None
     summary = {
         "top": top,
         "die_um": [round(die_w, 2), round(die_h, 2)],
@@ -155,6 +158,7 @@ def main():
         "lvs_match": lvs == "1",
         "lvs_symmetries": symmetries,
         "repairs": repairs,
+        "router_stage3": stage3,
         "drc_lvs_views": "abstract (LEF): qflow-tech-osu018 has no cell GDS",
         "macros": macros,
         "blocks": block_list,
@@ -186,6 +190,7 @@ def main():
           f"| unrouted nets | {unrouted} |", f"| DRC errors (abstract views) | {drc} |",
           f"| LVS | {'match' if lvs == '1' else 'MISMATCH'}"
           f"{f' ({symmetries} symmetries)' if symmetries else ''} |",
+          f"| qrouter's stage 3 (clean-up reroute) | {'run' if stage3 else 'left out' if stage3 is False else 'unknown'} |",
           f"| qrouter's DEF mended (layout_repair.py) | {len(repairs)} |",
           f"| T_sta after layout | {summary['t_sta_ns'] if summary['t_sta_ns'] else (sta_note or 'not run')} |", ""]
     if summary["worst_path"]:

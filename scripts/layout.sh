@@ -25,10 +25,10 @@
 #                      unrouted (every metal obstructed before routing)
 #   --no-cleanup       end qrouter's routing once stage 2 has routed every net: its
 #                      stage 3 (each net ripped up and routed again, shorter, two rounds)
-#                      is left out. On one_pass_pipelined (31 680 nets) stage 1 and 2
-#                      took 77 min at density 0.45 and stage 3 was still on its first
-#                      round after 50 min more (docs/silicon.md); layout_summary.json says
-#                      which ran (router_stage3)
+#                      is left out. On one_pass_pipelined (31 680 nets, density 0.45)
+#                      stages 1 and 2 routed every net in 74-79 min, and stage 3 would
+#                      then route all of them twice more (docs/silicon.md);
+#                      layout_summary.json says whether it ran (router_stage3)
 #   --resume           keep OUT_DIR/qflow and go on after its last finished step: after
 #                      its placement (graywolf takes tens of minutes on the whole device),
 #                      or, when a routed DEF, its R and C and a route log newer than the

@@ -51,16 +51,6 @@ tool_of() {  # tool_of BUILD KIND
 # (tb: testbench/specular_tb, a tool: tools/KIND/specular_KIND; gatesim: scripts/gatesim.sh, with
 # @WORK@ in ARGUMENTS the task's own folder work/ID and @NETLISTS@ the run's netlists).
 # Tasks of one GROUP are the N shards of one run and merge into one answer.
-# A design's layout.sh options beyond its defaults (docs/silicon.md, "Layout"):
-# one_pass_pipelined's 31 680 nets at the default density 0.6 were still in qrouter's
-# stage 2 after 2.4 h; at 0.45 stages 1 and 2 routed every net in 77 min, and its stage 3
-# (a clean-up reroute of every net, twice) is left out.
-layout_options() {  # layout_options NAME
-  case "$1" in
-    one_pass_pipelined) echo "--utilisation 0.45 --no-cleanup" ;;
-  esac
-}
-
 emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
   local group=$1 kind=$2 n=$3
   shift 3
@@ -69,6 +59,16 @@ emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
     printf '%s\t%s\t%s\t%s --shard %d/%d\n' "$next_id" "$group" "$kind" "$*" "$i" "$n"
     next_id=$((next_id + 1))
   done
+}
+
+# A design's layout.sh options beyond its defaults (docs/silicon.md, "Layout"):
+# one_pass_pipelined's 31 680 nets at the default density 0.6 were still in qrouter's
+# stage 2 after 2.4 h; at 0.45 stages 1 and 2 routed every net in 74-79 min, and its stage 3
+# (a clean-up reroute of every net, twice) is left out.
+layout_options() {  # layout_options NAME
+  case "$1" in
+    one_pass_pipelined) echo "--utilisation 0.45 --no-cleanup" ;;
+  esac
 }
 
 # The design variants (issue 26): every name the registry holds (specular_variant_error

@@ -1,0 +1,173 @@
+#!/usr/bin/env python3
+"""The design space after layout, from its table (issue 48): docs/design_space/layout_table.md
+read back, its Pareto column checked against the fronts worked out from the table's own
+figures, and the three *_layout.svg plots drawn from them.
+
+Why: the layout runs behind that table (silicon.sh's and layout.sh's folders, hours of
+CPU each) do not outlive the machine they ran on, so rows are added by hand when a layout
+finishes. design_space.py needs every design's folders; this needs only the table, so a
+hand-written row cannot leave a wrong Pareto mark or a stale plot behind.
+
+  python3 scripts/layout_fronts.py TABLE [--fix] [--svg-dir DIR]
+
+Each row: design | after layout (yes / no (estimate)) | die (mm²) | T_sta (ns) |
+results/s per mm² (M) | energy per result (pJ) | lobe max |err| | Pareto. A figure is
+"before → **after**" for a design laid out, "before" for one that is not (energy may be
+"—"). The fronts, as design_space.py draws them (design_space.pareto: both axes
+minimised), are from the mixed figures: after layout where there is one, the estimate
+otherwise. area: die against error; throughput/mm²: results/s per mm² (maximised) against
+error; energy–error: energy per result against error.
+
+Without --fix: exit 1 if a row's Pareto column differs from the fronts worked out (each
+such row named, with what it says and what the figures give), or if its "after layout"
+column disagrees with its figures. --fix rewrites the Pareto column in place instead.
+--svg-dir (needs matplotlib: Debian's /usr/bin/python3) draws area_vs_error_layout.svg,
+throughput_vs_error_layout.svg and energy_vs_error_layout.svg. Exit 0 as checked or
+written, 1 a disagreement or an unreadable row, 2 bad arguments.
+"""
+import argparse
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from design_space import pareto, plot  # noqa: E402  (the fronts' rule and the plots, once)
+
+FRONTS = ("area", "throughput/mm²", "energy–error")
+ARROW = re.compile(r"^([0-9.e+-]+) → \*\*([0-9.e+-]+)\*\*$")
+
+
+class RowError(Exception):
+    pass
+
+
+def figure(cell, label, column):
+    """(before, after) of one cell: after is None where the design is not laid out."""
+    cell = cell.strip()
+    if cell == "—":
+        return None, None
+    m = ARROW.match(cell)
+    try:
+        return (float(m.group(1)), float(m.group(2))) if m else (float(cell), None)
+    except ValueError:
+        raise RowError(f"{label}: {column} '{cell}' is not 'N' or 'N → **M**'")
+
+
+def read_table(path):
+    """The table's lines and its designs: label, laid out, (before, after) per figure,
+    error, the Pareto marks as written, and the line index of each row."""
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().split("\n")
+    designs = []
+    for i, line in enumerate(lines):
+        cells = [c.strip() for c in line.split("|")]
+        if len(cells) < 10 or not line.startswith("| ") or cells[1] == "design" or cells[1].startswith("---"):
+            continue
+        label = cells[1]
+        if cells[2] not in ("yes", "no (estimate)"):
+            raise RowError(f"{label}: after layout '{cells[2]}' is not 'yes' or 'no (estimate)'")
+        fig = {k: figure(cells[n], label, k) for n, k in ((3, "die"), (4, "t_sta"), (5, "tput"), (6, "energy"))}
+        try:
+            err = float(cells[7])
+        except ValueError:
+            raise RowError(f"{label}: lobe max |err| '{cells[7]}' is not a number")
+        marks = [m.strip() for m in cells[8].split(",") if m.strip()]
+        unknown = [m for m in marks if m not in FRONTS]
+        if unknown:
+            raise RowError(f"{label}: Pareto mark '{unknown[0]}' is none of {', '.join(FRONTS)}")
+        designs.append({"label": label, "laid_out": cells[2] == "yes", "fig": fig, "error": err,
+                        "marks": marks, "line": i, "cells": cells})
+    if not designs:
+        raise RowError("no design rows")
+    return lines, designs
+
+
+def consistency(d):
+    """A row laid out has a figure after layout for die and T_sta; one that is not has none."""
+    has = [k for k in ("die", "t_sta", "tput", "energy") if d["fig"][k][1] is not None]
+    if d["laid_out"] and not {"die", "t_sta", "tput"} <= set(has):
+        return f"{d['label']}: 'yes' after layout but die, T_sta or results/s per mm² has no '→ **after**'"
+    if not d["laid_out"] and has:
+        return f"{d['label']}: 'no (estimate)' but {', '.join(has)} has a figure after layout"
+    return None
+
+
+def mixed(designs, key):
+    return [d["fig"][key][1] if d["fig"][key][1] is not None else d["fig"][key][0] for d in designs]
+
+
+def fronts(designs):
+    err = [d["error"] for d in designs]
+    die, tput, energy = mixed(designs, "die"), mixed(designs, "tput"), mixed(designs, "energy")
+    return {"area": pareto(list(zip(die, err))),
+            "throughput/mm²": pareto([(-t if t is not None else None, e) for t, e in zip(tput, err)]),
+            "energy–error": pareto(list(zip(energy, err)))}
+
+
+def draw(designs, front, svg_dir):
+    os.makedirs(svg_dir, exist_ok=True)
+    err = [d["error"] for d in designs]
+    estimates = {i for i, d in enumerate(designs) if not d["laid_out"]}
+
+    def origins(key):
+        return [(d["fig"][key][0], d["error"]) if d["fig"][key][1] is not None else None for d in designs]
+
+    plot(designs, mixed(designs, "die"), err, front["area"],
+         "die (mm², OSU 0.18 µm): after layout, or the estimate", "lobe max |error| (K(n)·cos^n, S10.20)",
+         "Area against error after layout (Pareto front: red)",
+         os.path.join(svg_dir, "area_vs_error_layout.svg"), origins=origins("die"), estimates=estimates)
+    plot(designs, mixed(designs, "tput"), err, front["throughput/mm²"],
+         "results/s streamed per mm² of die (M, at T_sta): after layout, or the estimate",
+         "lobe max |error| (K(n)·cos^n, S10.20)", "Throughput per mm² against error after layout (Pareto front: red)",
+         os.path.join(svg_dir, "throughput_vs_error_layout.svg"), x_log=True, where="pre",
+         origins=origins("tput"), estimates=estimates)
+    plot(designs, mixed(designs, "energy"), err, front["energy–error"],
+         "energy per result (pJ, random operands, 50 ns): after layout, or before",
+         "lobe max |error| (K(n)·cos^n, S10.20)", "Energy against error after layout (Pareto front: red)",
+         os.path.join(svg_dir, "energy_vs_error_layout.svg"), origins=origins("energy"),
+         estimates={i for i, d in enumerate(designs) if d["fig"]["energy"][1] is None})
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    p.add_argument("table")
+    p.add_argument("--fix", action="store_true", help="rewrite the Pareto column from the figures")
+    p.add_argument("--svg-dir", help="draw the three *_layout.svg plots here")
+    a = p.parse_args()
+    if not os.path.isfile(a.table):
+        p.error(f"'{a.table}' is not a file")
+    try:
+        lines, designs = read_table(a.table)
+    except RowError as e:
+        sys.stderr.write(f"layout_fronts.py: {a.table}: {e}\n")
+        return 1
+    problems = [c for c in map(consistency, designs) if c]
+    front = fronts(designs)
+    for i, d in enumerate(designs):
+        want = [f for f in FRONTS if i in front[f]]
+        if want == d["marks"]:
+            continue
+        if a.fix:
+            cells = d["cells"]
+            cells[8] = ", ".join(want)
+            lines[d["line"]] = "| " + " | ".join(cells[1:-1]) + " |"
+        else:
+            problems.append(f"{d['label']}: Pareto '{', '.join(d['marks'])}', "
+                            f"the figures give '{', '.join(want)}'")
+    for msg in problems:
+        sys.stderr.write(f"layout_fronts.py: {a.table}: {msg}\n")
+    if problems:
+        return 1
+    if a.fix:
+        with open(a.table, "w", encoding="utf-8") as f:
+            f.write("\n".join(lines))
+    if a.svg_dir:
+        draw(designs, front, a.svg_dir)
+    laid = sum(d["laid_out"] for d in designs)
+    print(f"layout_fronts.py: {len(designs)} designs, {laid} after layout; "
+          + "; ".join(f"{f}: {', '.join(designs[i]['label'] for i in front[f])}" for f in FRONTS))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""scripts/layout_fronts.py (issue 48): the Pareto column of the table after layout is
+checked against the fronts its own figures give.
+
+  layout_fronts_test.py PROJECT_DIR SCRATCH made-up   # four made-up designs
+  layout_fronts_test.py PROJECT_DIR SCRATCH committed # docs/design_space/layout_table.md
+
+made-up: a table of four designs whose fronts are known by construction:
+  a  2.0 → 3.0 mm², 20 → 10 M/s/mm², 1000 → 1200 pJ, error 0.1 (laid out)
+  b  2.5 mm², 12 M/s/mm², 900 pJ, error 0.1 (estimate)
+  c  4.0 → 4.2 mm², 5 → 4 M/s/mm², 2000 → 2100 pJ, error 0.01 (laid out)
+  d  1.0 mm², 1 M/s/mm², — pJ, error 0.2 (estimate, no energy)
+After layout b dominates a on all three planes (smaller, faster, less energy at the same
+error); d (smallest, largest error) is on the area front only; c (the smallest error) is on
+every front. The right column passes; a mark planted on a, or taken off c, fails naming
+the row; --fix writes the right column; a 'yes' row without a figure after layout and a
+figure that is not a number fail naming them.
+committed: the committed table passes, and docs/design_space.md embeds it unchanged.
+Exit 0 pass, 1 fail.
+"""
+import os
+import shutil
+import subprocess
+import sys
+
+HEAD = ("| design | after layout | die (mm²): estimate → layout | T_sta (ns) | results/s per mm² (M) | "
+        "energy per result at 50 ns (pJ) | lobe max \\|err\\| | Pareto (mixed figures) |\n"
+        "|---|---|---:|---:|---:|---:|---:|---|\n")
+ROWS = {
+    "a": "| a | yes | 2.000 → **3.000** | 10.00 → **20.00** | 20.00 → **10.00** | 1000 → **1200** | 0.1 | {} |",
+    "b": "| b | no (estimate) | 2.500 | 15.00 | 12.00 | 900 | 0.1 | {} |",
+    "c": "| c | yes | 4.000 → **4.200** | 30.00 → **31.00** | 5.00 → **4.00** | 2000 → **2100** | 0.01 | {} |",
+    "d": "| d | no (estimate) | 1.000 | 40.00 | 1.00 | — | 0.2 | {} |",
+}
+RIGHT = {"a": "", "b": "area, throughput/mm², energy–error", "c": "area, throughput/mm², energy–error",
+         "d": "area"}
+
+
+def table(marks, override=None):
+    rows = dict(ROWS)
+    rows.update(override or {})
+    return HEAD + "\n".join(rows[k].format(marks[k]) for k in "abcd") + "\n"
+
+
+def run(project, path, *args):
+    return subprocess.run([sys.executable, os.path.join(project, "scripts", "layout_fronts.py"), path, *args],
+                          capture_output=True, text=True)
+
+
+def made_up(project, scratch):
+    fails = []
+    path = os.path.join(scratch, "layout_table.md")
+
+    def case(name, text, want_rc, want_in=(), *args):
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        r = run(project, path, *args)
+        if r.returncode != want_rc or any(w not in r.stderr for w in want_in):
+            fails.append(f"{name}: exit {r.returncode} (want {want_rc}), stderr {r.stderr!r} "
+                         f"(want {list(want_in)})")
+        return r
+
+    case("right column", table(RIGHT), 0)
+    case("mark planted on a", table({**RIGHT, "a": "area"}), 1, ("a: Pareto 'area', the figures give ''",))
+    case("mark taken off c", table({**RIGHT, "c": "area, throughput/mm²"}), 1,
+         ("c: Pareto 'area, throughput/mm²', the figures give 'area, throughput/mm², energy–error'",))
+    case("--fix", table({k: "" for k in RIGHT}), 0, (), "--fix")
+    if open(path, encoding="utf-8").read() != table(RIGHT):
+        fails.append(f"--fix wrote:\n{open(path, encoding='utf-8').read()}")
+    case("'yes' without a figure after layout", table(RIGHT, {"a": ROWS["a"].replace("2.000 → **3.000**", "2.000")}),
+         1, ("a: 'yes' after layout but",))
+    case("not a number", table(RIGHT, {"d": ROWS["d"].replace("| 1.000 |", "| 1,0 |")}), 1,
+         ("d: die '1,0' is not",))
+    return fails
+
+
+def committed(project):
+    fails = []
+    path = os.path.join(project, "docs", "design_space", "layout_table.md")
+    r = run(project, path)
+    if r.returncode != 0:
+        fails.append(f"{path}: exit {r.returncode}: {r.stderr}")
+    page = open(os.path.join(project, "docs", "design_space.md"), encoding="utf-8").read()
+    start, end = "<!-- layout_table.md -->\n", "<!-- /layout_table.md -->"
+    if start not in page or end not in page:
+        fails.append("docs/design_space.md: no <!-- layout_table.md --> markers")
+    elif page.split(start, 1)[1].split(end, 1)[0] != open(path, encoding="utf-8").read():
+        fails.append("docs/design_space.md's embedded layout table differs from docs/design_space/layout_table.md")
+    return fails
+
+
+def main():
+    project, scratch, mode = sys.argv[1:4]
+    shutil.rmtree(scratch, ignore_errors=True)
+    os.makedirs(scratch)
+    fails = made_up(project, scratch) if mode == "made-up" else committed(project)
+    for f in fails:
+        print("FAIL:", f)
+    if not fails:
+        print(f"PASS ({mode})")
+    return 1 if fails else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

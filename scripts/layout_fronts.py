@@ -8,7 +8,8 @@ CPU each) do not outlive the machine they ran on, so rows are added by hand when
 finishes. design_space.py needs every design's folders; this needs only the table, so a
 hand-written row cannot leave a wrong Pareto mark or a stale plot behind.
 
-  python3 scripts/layout_fronts.py TABLE [--fix] [--svg-dir DIR]
+  python3 scripts/layout_fronts.py TABLE [--fix] [--svg-dir DIR] [--embed PAGE]
+          [--set LABEL LAYOUT_SUMMARY SILICON_SUMMARY [ENERGY_JSON]]
 
 Each row: design | after layout (yes / no (estimate)) | die (mm²) | T_sta (ns) |
 results/s per mm² (M) | energy per result (pJ) | lobe max |err| | Pareto. A figure is
@@ -22,16 +23,27 @@ Without --fix: exit 1 if a row's Pareto column differs from the fronts worked ou
 such row named, with what it says and what the figures give), or if its "after layout"
 column disagrees with its figures. --fix rewrites the Pareto column in place instead.
 --svg-dir (needs matplotlib: Debian's /usr/bin/python3) draws area_vs_error_layout.svg,
-throughput_vs_error_layout.svg and energy_vs_error_layout.svg. Exit 0 as checked or
-written, 1 a disagreement or an unreadable row, 2 bad arguments.
+throughput_vs_error_layout.svg and energy_vs_error_layout.svg.
+
+--set writes one design's row from its layout run (then the Pareto column, as --fix):
+layout.sh's layout_summary.json (refused unless clean: 0 unrouted nets, 0 DRC errors, LVS
+match), the silicon.sh summary it was laid out from (its top must be the row's design, its
+die estimate and T_sta the row's estimates) and energy.sh's energy.json on the post-layout
+netlist. The figures are design_space.py's: die_area_mm2, t_sta_ns, 10^9 / (T_sta ×
+clocks_per_result_streamed) / die, and the random operands' mean energy. --embed PAGE puts
+the table written into PAGE between its <!-- NAME --> and <!-- /NAME --> markers (NAME:
+the table's file name). Exit 0 as checked or written, 1 a disagreement, an unreadable row
+or a refused run, 2 bad arguments.
 """
 import argparse
+import json
 import os
 import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from design_space import pareto, plot  # noqa: E402  (the fronts' rule and the plots, once)
+# the fronts' rule, the plots, the designs' labels and the energy figure: once, there
+from design_space import DEVICE_TOPS, design_name, energy_figure, pareto, plot  # noqa: E402
 
 FRONTS = ("area", "throughput/mm²", "energy–error")
 ARROW = re.compile(r"^([0-9.e+-]+) → \*\*([0-9.e+-]+)\*\*$")
@@ -104,6 +116,60 @@ def fronts(designs):
             "energy–error": pareto(list(zip(energy, err)))}
 
 
+def set_row(designs, lines, label, paths):
+    """Rewrite the row of `label` from its layout run (see --set); RowError if refused."""
+    rows = [d for d in designs if d["label"] == label]
+    if not rows:
+        raise RowError(f"--set: no row '{label}' (rows: {', '.join(d['label'] for d in designs)})")
+    d = rows[0]
+    loaded = []
+    for path in paths:
+        try:
+            with open(path, encoding="utf-8") as f:
+                loaded.append(json.load(f))
+        except (OSError, ValueError) as e:
+            raise RowError(f"--set {label}: {path}: {e}")
+    lay, sil = loaded[0], loaded[1]
+    energy = loaded[2] if len(loaded) > 2 else None
+    faults = [f"{k} {lay.get(k)}" for k in ("unrouted_nets", "drc_errors") if lay.get(k) != 0]
+    if lay.get("lvs_match") is not True:
+        faults.append("no LVS match")
+    if faults:
+        raise RowError(f"--set {label}: {paths[0]}: not clean ({', '.join(faults)})")
+    for what, top in (("layout summary", lay.get("top")), ("silicon summary", sil.get("top"))):
+        if DEVICE_TOPS.get(top, design_name(top or "")) != label:
+            raise RowError(f"--set {label}: the {what}'s top '{top}' is not the row's design")
+    for key, column, fmt in (("die_area_estimate_mm2", "die", "{:.3f}"), ("t_sta_ns", "t_sta", "{:.2f}")):
+        if fmt.format(sil[key]) != fmt.format(d["fig"][column][0]):
+            raise RowError(f"--set {label}: the silicon summary's {key} {sil[key]} is not the row's "
+                           f"estimate {fmt.format(d['fig'][column][0])}")
+    die, t_sta, cpr = lay["die_area_mm2"], lay["t_sta_ns"], sil["clocks_per_result_streamed"]
+    after = {"die": ("{:.3f}", die), "t_sta": ("{:.2f}", t_sta), "tput": ("{:.2f}", 1e9 / (t_sta * cpr) / die / 1e6),
+             "energy": ("{:.0f}", energy_figure(energy) if energy else None)}
+    cells = d["cells"]
+    cells[2] = "yes"
+    for n, key in ((3, "die"), (4, "t_sta"), (5, "tput"), (6, "energy")):
+        fmt, value = after[key]
+        before = cells[n].split(" → ")[0]
+        cells[n] = before if value is None else f"{before} → **{fmt.format(value)}**"
+        d["fig"][key] = (d["fig"][key][0], None if value is None else float(fmt.format(value)))
+    d["laid_out"] = True
+    lines[d["line"]] = "| " + " | ".join(cells[1:-1]) + " |"
+
+
+def embed(page, table_path, text):
+    """Put the table into PAGE between <!-- NAME --> and <!-- /NAME --> (NAME: its file name)."""
+    name = os.path.basename(table_path)
+    start, end = f"<!-- {name} -->\n", f"<!-- /{name} -->"
+    with open(page, encoding="utf-8") as f:
+        body = f.read()
+    if start not in body or end not in body:
+        raise RowError(f"--embed: {page} has no '<!-- {name} -->' ... '<!-- /{name} -->' markers")
+    head, rest = body.split(start, 1)
+    with open(page, "w", encoding="utf-8") as f:
+        f.write(head + start + text + end + rest.split(end, 1)[1])
+
+
 def draw(designs, front, svg_dir):
     os.makedirs(svg_dir, exist_ok=True)
     err = [d["error"] for d in designs]
@@ -133,11 +199,19 @@ def main():
     p.add_argument("table")
     p.add_argument("--fix", action="store_true", help="rewrite the Pareto column from the figures")
     p.add_argument("--svg-dir", help="draw the three *_layout.svg plots here")
+    p.add_argument("--embed", metavar="PAGE", help="put the table into PAGE between its markers")
+    p.add_argument("--set", nargs="+", metavar="ARG",
+                   help="LABEL LAYOUT_SUMMARY SILICON_SUMMARY [ENERGY_JSON]: that row from its layout run")
     a = p.parse_args()
     if not os.path.isfile(a.table):
         p.error(f"'{a.table}' is not a file")
+    if a.set and len(a.set) not in (3, 4):
+        p.error(f"--set takes LABEL LAYOUT_SUMMARY SILICON_SUMMARY [ENERGY_JSON], not {len(a.set)} arguments")
     try:
         lines, designs = read_table(a.table)
+        if a.set:
+            set_row(designs, lines, a.set[0], a.set[1:])
+            a.fix = True
     except RowError as e:
         sys.stderr.write(f"layout_fronts.py: {a.table}: {e}\n")
         return 1
@@ -161,6 +235,12 @@ def main():
     if a.fix:
         with open(a.table, "w", encoding="utf-8") as f:
             f.write("\n".join(lines))
+    if a.embed:
+        try:
+            embed(a.embed, a.table, open(a.table, encoding="utf-8").read())
+        except (RowError, OSError) as e:
+            sys.stderr.write(f"layout_fronts.py: {e}\n")
+            return 1
     if a.svg_dir:
         draw(designs, front, a.svg_dir)
     laid = sum(d["laid_out"] for d in designs)

@@ -15,9 +15,15 @@ error); d (smallest, largest error) is on the area front only; c (the smallest e
 every front. The right column passes; a mark planted on a, or taken off c, fails naming
 the row; --fix writes the right column; a 'yes' row without a figure after layout and a
 figure that is not a number fail naming them.
+--set b from a made-up run (die 3.2 mm², T_sta 16 ns, 2 clocks per result, 950 pJ) writes
+b's row as worked out here (10^9 / (16 · 2) / 3.2 = 9.77 M/s/mm²) and the marks again: b,
+now larger and slower than a at the same error, hands a the area and throughput fronts
+and keeps the energy one (950 < 1 200 pJ); --embed puts the table in a page between its
+markers; a run with a DRC error, or of another design, is refused.
 committed: the committed table passes, and docs/design_space.md embeds it unchanged.
 Exit 0 pass, 1 fail.
 """
+import json
 import os
 import shutil
 import subprocess
@@ -71,6 +77,41 @@ def made_up(project, scratch):
          1, ("a: 'yes' after layout but",))
     case("not a number", table(RIGHT, {"d": ROWS["d"].replace("| 1.000 |", "| 1,0 |")}), 1,
          ("d: die '1,0' is not",))
+    # --set b from a made-up layout run
+    run_dir = os.path.join(scratch, "run_b")
+    os.makedirs(run_dir)
+    files = {"layout": {"top": "specular_b", "die_area_mm2": 3.2, "t_sta_ns": 16.0, "unrouted_nets": 0,
+                        "drc_errors": 0, "lvs_match": True},
+             "silicon": {"top": "specular_b", "die_area_estimate_mm2": 2.5, "t_sta_ns": 15.0,
+                         "clocks_per_result_streamed": 2},
+             "energy": {"total_pj_at_period": 999.0, "random_total_pj_at_period": 950.0}}
+    paths = {}
+    for k, v in files.items():
+        paths[k] = os.path.join(run_dir, k + ".json")
+        with open(paths[k], "w") as f:
+            json.dump(v, f)
+    page = os.path.join(scratch, "page.md")
+    with open(page, "w", encoding="utf-8") as f:
+        f.write("before\n<!-- layout_table.md -->\nold\n<!-- /layout_table.md -->\nafter\n")
+    tput = 1e9 / (16.0 * 2) / 3.2 / 1e6
+    want_b = f"| b | yes | 2.500 → **3.200** | 15.00 → **16.00** | 12.00 → **{tput:.2f}** | 900 → **950** | 0.1 | {{}} |"
+    want = table({**RIGHT, "a": "area, throughput/mm²", "b": "energy–error"}, {"b": want_b})
+    case("--set b", table(RIGHT), 0, (), "--set", "b", paths["layout"], paths["silicon"], paths["energy"],
+         "--embed", page)
+    if open(path, encoding="utf-8").read() != want:
+        fails.append(f"--set b wrote:\n{open(path, encoding='utf-8').read()}\nwant:\n{want}")
+    if open(page, encoding="utf-8").read() != "before\n<!-- layout_table.md -->\n" + want + "<!-- /layout_table.md -->\nafter\n":
+        fails.append(f"--embed wrote:\n{open(page, encoding='utf-8').read()}")
+    files["layout"]["drc_errors"] = 2
+    with open(paths["layout"], "w") as f:
+        json.dump(files["layout"], f)
+    case("--set with a DRC error", table(RIGHT), 1, ("not clean (drc_errors 2)",),
+         "--set", "b", paths["layout"], paths["silicon"])
+    files["layout"]["drc_errors"] = 0
+    with open(paths["layout"], "w") as f:
+        json.dump(files["layout"], f)
+    case("--set of another design", table(RIGHT), 1, ("layout summary's top 'specular_b' is not the row's design",),
+         "--set", "c", paths["layout"], paths["silicon"])
     return fails
 
 

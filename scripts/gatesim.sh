@@ -188,6 +188,8 @@ for image in rom5.hex rom38.hex pins.hex; do
   [[ -f "$rom_dir/$image" ]] || fail_args "'$rom_dir/$image' not found: build the ROM images (cmake --build build --target specular_rom_images) or name their folder"
 done
 fi
+# a variant's images are its own (exp2.hex, recip.hex, ...): at least their folder, checked here
+[[ -f "$rom_dir/pins.hex" ]] || fail_args "ROM_DIR '$rom_dir' holds no pins.hex: build the ROM images (cmake --build build --target specular_rom_images) or name their folder"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"
 rom_dir="$(cd "$rom_dir" && pwd)"

@@ -15,6 +15,8 @@ expect_refusal("--random '-3'|--random needs" ${GATESIM} --random -3 10 ${SCRATC
 expect_refusal("--groups '9' is not a count from 1 to 8" ${GATESIM} --groups 9 10 ${SCRATCH}/x)
 expect_refusal("--shard '3/3': expected I/N" ${GATESIM} --shard 3/3 10 ${SCRATCH}/x)
 expect_refusal("--shard 'a/4': expected I/N" ${GATESIM} --shard a/4 10 ${SCRATCH}/x)
+expect_refusal("ROM_DIR '${SCRATCH}/no_roms' holds no pins.hex" ${GATESIM} --top specular_exp2 --vectors-tool /bin/true
+               10 ${SCRATCH}/x ${SCRATCH}/no_roms)
 expect_refusal("--merge needs the partial files" ${GATESIM} --merge)
 expect_refusal("is not a complete gatesim partial result" ${GATESIM} --merge ${SILICON})
 foreach(script ${SILICON} ${GATESIM})

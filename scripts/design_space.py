@@ -79,6 +79,14 @@ def load(runs, errors):
     return designs
 
 
+def layout_faults(lay):
+    """What keeps a layout_summary.json from being clean: unrouted nets, DRC errors, no LVS match."""
+    faults = [f"{k} {lay.get(k)}" for k in ("unrouted_nets", "drc_errors") if lay.get(k) != 0]
+    if lay.get("lvs_match") is not True:
+        faults.append("no LVS match")
+    return faults
+
+
 def load_layouts(layout_dir):
     """The designs after layout: name -> {"layout": layout_summary.json, "energy":
     energy/energy.json or None}. A layout that is not clean is no figure: left out."""
@@ -89,9 +97,7 @@ def load_layouts(layout_dir):
             continue
         with open(path) as f:
             lay = json.load(f)
-        faults = [f"{k} {lay.get(k)}" for k in ("unrouted_nets", "drc_errors") if lay.get(k) != 0]
-        if lay.get("lvs_match") is not True:
-            faults.append("no LVS match")
+        faults = layout_faults(lay)
         if faults:
             sys.stderr.write(f"design_space.py: {path}: not clean ({', '.join(faults)}): left out\n")
             continue

@@ -184,11 +184,11 @@ if [[ $VARIANT_VECTORS -eq 1 ]]; then
   [[ $random_set -eq 1 ]] || random=10
 else
 [[ -x "$specular_tb" ]] || fail_args "specular_tb not found at '$specular_tb' (cmake --build build --target specular_tb, or --specular-tb PATH)"
-for image in rom5.hex rom38.hex pins.hex; do
+for image in rom5.hex rom38.hex; do
   [[ -f "$rom_dir/$image" ]] || fail_args "'$rom_dir/$image' not found: build the ROM images (cmake --build build --target specular_rom_images) or name their folder"
 done
 fi
-# a variant's images are its own (exp2.hex, recip.hex, ...): at least their folder, checked here
+# every top reads pins.hex; a variant's other images are its own (exp2.hex, recip.hex, ...)
 [[ -f "$rom_dir/pins.hex" ]] || fail_args "ROM_DIR '$rom_dir' holds no pins.hex: build the ROM images (cmake --build build --target specular_rom_images) or name their folder"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"

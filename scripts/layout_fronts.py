@@ -43,7 +43,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 # the fronts' rule, the plots, the designs' labels and the energy figure: once, there
-from design_space import DEVICE_TOPS, design_name, energy_figure, pareto, plot  # noqa: E402
+from design_space import DEVICE_TOPS, design_name, energy_figure, layout_faults, pareto, plot  # noqa: E402
 
 FRONTS = ("area", "throughput/mm²", "energy–error")
 ARROW = re.compile(r"^([0-9.e+-]+) → \*\*([0-9.e+-]+)\*\*$")
@@ -131,9 +131,7 @@ def set_row(designs, lines, label, paths):
             raise RowError(f"--set {label}: {path}: {e}")
     lay, sil = loaded[0], loaded[1]
     energy = loaded[2] if len(loaded) > 2 else None
-    faults = [f"{k} {lay.get(k)}" for k in ("unrouted_nets", "drc_errors") if lay.get(k) != 0]
-    if lay.get("lvs_match") is not True:
-        faults.append("no LVS match")
+    faults = layout_faults(lay)
     if faults:
         raise RowError(f"--set {label}: {paths[0]}: not clean ({', '.join(faults)})")
     for what, top in (("layout summary", lay.get("top")), ("silicon summary", sil.get("top"))):

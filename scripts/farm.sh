@@ -67,7 +67,8 @@ emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
 # (a clean-up reroute of every net, twice) is left out.
 layout_options() {  # layout_options NAME
   case "$1" in
-    one_pass_pipelined) echo "--utilisation 0.45 --no-cleanup" ;;
+    one_pass|one_pass_pipelined) echo "--utilisation 0.45 --no-cleanup" ;;
+    schlick) echo "--no-cleanup" ;;
   esac
 }
 

@@ -41,16 +41,19 @@ expect 2 "--utilisation: 'half' is not a density from 0.2 to 0.9" "${job[@]}" la
 expect 2 "--no-cleanup is an option of layout, not of silicon" "${job[@]}" silicon exp2 --no-cleanup --partial "$scratch/x.json"
 # farm.sh's layout regression (issue 48): one variant_job layout task per design, the two
 # device tops first, then every name the variant registry lists (a stand-in lister here:
-# no build needed), one_pass_pipelined with its lower density and no stage 3.
+# no build needed), one_pass and one_pass_pipelined with their lower density and no
+# stage 3, schlick with no stage 3.
 mkdir -p "$scratch/build/tools/variant_error"
-printf '#!/bin/sh\necho exp2 one_pass_pipelined us5739820\n' >"$scratch/build/tools/variant_error/specular_variant_error"
+printf '#!/bin/sh\necho exp2 one_pass one_pass_pipelined schlick us5739820\n' >"$scratch/build/tools/variant_error/specular_variant_error"
 chmod +x "$scratch/build/tools/variant_error/specular_variant_error"
 diff <(bash "$root/scripts/farm.sh" list layout --build "$scratch/build") - <<'EOF' || fail "farm.sh list layout: not one layout task per design"
 0	layout_device	variant_job	layout device --shard 0/1
 1	layout_device_sync	variant_job	layout device_sync --shard 0/1
 2	layout_exp2	variant_job	layout exp2 --shard 0/1
-3	layout_one_pass_pipelined	variant_job	layout one_pass_pipelined --utilisation 0.45 --no-cleanup --shard 0/1
-4	layout_us5739820	variant_job	layout us5739820 --shard 0/1
+3	layout_one_pass	variant_job	layout one_pass --utilisation 0.45 --no-cleanup --shard 0/1
+4	layout_one_pass_pipelined	variant_job	layout one_pass_pipelined --utilisation 0.45 --no-cleanup --shard 0/1
+5	layout_schlick	variant_job	layout schlick --no-cleanup --shard 0/1
+6	layout_us5739820	variant_job	layout us5739820 --shard 0/1
 EOF
 # farm.sh's mutants regression (issue 46): the whole IP's two targets, 2 shards of 100 each,
 # after the device's groups.

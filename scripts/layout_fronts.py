@@ -145,6 +145,9 @@ def set_row(designs, lines, label, paths):
     after = {"die": ("{:.3f}", die), "t_sta": ("{:.2f}", t_sta), "tput": ("{:.2f}", 1e9 / (t_sta * cpr) / die / 1e6),
              "energy": ("{:.0f}", energy_figure(energy) if energy else None)}
     cells = d["cells"]
+    if after["energy"][1] is not None and cells[6].split(" → ")[0] == "—":
+        raise RowError(f"--set {label}: the row has no energy before layout ('—') to set one after "
+                       "beside: write the figure of energy.sh on the run's silicon/ there first")
     cells[2] = "yes"
     for n, key in ((3, "die"), (4, "t_sta"), (5, "tput"), (6, "energy")):
         fmt, value = after[key]

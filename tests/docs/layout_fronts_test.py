@@ -19,7 +19,8 @@ figure that is not a number fail naming them.
 b's row as worked out here (10^9 / (16 · 2) / 3.2 = 9.77 M/s/mm²) and the marks again: b,
 now larger and slower than a at the same error, hands a the area and throughput fronts
 and keeps the energy one (950 < 1 200 pJ); --embed puts the table in a page between its
-markers; a run with a DRC error, or of another design, is refused.
+markers; a run with a DRC error, or of another design, is refused, and so is an energy
+after layout beside a row's '—' before it.
 committed: the committed table passes, and docs/design_space.md embeds it unchanged.
 Exit 0 pass, 1 fail.
 """
@@ -112,6 +113,9 @@ def made_up(project, scratch):
         json.dump(files["layout"], f)
     case("--set of another design", table(RIGHT), 1, ("layout summary's top 'specular_b' is not the row's design",),
          "--set", "c", paths["layout"], paths["silicon"])
+    # an energy after layout with none before it ('—') would make a cell the check refuses
+    case("--set an energy beside '—'", table(RIGHT, {"b": ROWS["b"].replace("| 900 |", "| — |")}), 1,
+         ("no energy before layout ('—')",), "--set", "b", paths["layout"], paths["silicon"], paths["energy"])
     return fails
 
 

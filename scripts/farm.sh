@@ -64,7 +64,8 @@ emit_group() {  # emit_group GROUP KIND N ARGUMENTS...
 # A design's layout.sh options beyond its defaults (docs/silicon.md, "Layout"):
 # one_pass_pipelined's 31 680 nets at the default density 0.6 were still in qrouter's
 # stage 2 after 2.4 h; at 0.45 stages 1 and 2 routed every net in 74-79 min, and its stage 3
-# (a clean-up reroute of every net, twice) is left out.
+# (a clean-up reroute of every net, twice) is left out. one_pass (the same three macros)
+# takes the same options and schlick the second, as each was laid out.
 layout_options() {  # layout_options NAME
   case "$1" in
     one_pass|one_pass_pipelined) echo "--utilisation 0.45 --no-cleanup" ;;

@@ -1,20 +1,21 @@
 // The proof's top (rtl/formal/axi_lite_bmc.cmake): specular_ip_axi with every master
 // input free, and its AXI4-Lite rules (specular_ip_axi_props.v, read with FORMAL:
-// the slave's asserted, the master's assumed).
+// the slave's asserted, the master's assumed). The IP at its default ADDR_WIDTH (15): the
+// checker sees the offsets zero-extended.
 `default_nettype none
 
 module specular_ip_axi_formal (
   input wire        aclk,
   input wire        aresetn,
   input wire        awvalid,
-  input wire [31:0] awaddr,
+  input wire [14:0] awaddr,
   input wire [2:0]  awprot,
   input wire        wvalid,
   input wire [31:0] wdata,
   input wire [3:0]  wstrb,
   input wire        bready,
   input wire        arvalid,
-  input wire [31:0] araddr,
+  input wire [14:0] araddr,
   input wire [2:0]  arprot,
   input wire        rready
 );
@@ -33,10 +34,10 @@ module specular_ip_axi_formal (
 
   specular_ip_axi_props props (
     .aclk(aclk), .aresetn(aresetn),
-    .awvalid(awvalid), .awready(awready), .awaddr(awaddr),
+    .awvalid(awvalid), .awready(awready), .awaddr({17'd0, awaddr}),
     .wvalid(wvalid), .wready(wready), .wdata(wdata), .wstrb(wstrb),
     .bvalid(bvalid), .bready(bready), .bresp(bresp),
-    .arvalid(arvalid), .arready(arready), .araddr(araddr),
+    .arvalid(arvalid), .arready(arready), .araddr({17'd0, araddr}),
     .rvalid(rvalid), .rready(rready), .rdata(rdata), .rresp(rresp));
 
   // done_irq is STATUS.DONE: not an AXI signal, not checked here.

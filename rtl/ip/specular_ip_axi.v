@@ -16,20 +16,28 @@
 //     any other pattern is refused (cause byte_enable). AWPROT and ARPROT are ignored.
 // The device runs at the bus clock; its configuration is fixed by the parameters
 // (CONFIG_VALUE at the device's default widths, PIN19_H_VALUE, PIN20_A_VALUE).
+// Addresses: AWADDR and ARADDR are ADDR_WIDTH bits wide, the low bits of whatever address
+// the interconnect carries, so the IP answers at any base aligned to 2**ADDR_WIDTH (the
+// interconnect selects the IP by the bits above). 15 (the default) covers the map's
+// 0x8000 bytes; 16 to 32 make the holes above 0x8000 visible too, answered DECERR as on
+// the TLM targets (the `axi` TLM target uses 32, the whole TLM address space). Below 15
+// the map does not fit: elaboration stops (ADDR_WIDTH_OUT_OF_RANGE). ERROR_ADDRESS holds
+// the offset the IP saw, zero-extended.
 `default_nettype none
 
 module specular_ip_axi #(
   parameter [31:0] CONFIG_VALUE = 135073792,     // 0x080D1000: patent constants and normalisation, clamp
   parameter [31:0] PIN19_H_VALUE = 128,          // 0x80: h = 1/2
   parameter [31:0] PIN20_A_VALUE = 4194304,      // 0x400000: a = 1.0
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex"
+  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex",
+  parameter ADDR_WIDTH = 15                      // 15..32: the offset bits decoded
 ) (
   input  wire        aclk,
   input  wire        aresetn,
   // write address
   input  wire        s_axi_awvalid,
   output wire        s_axi_awready,
-  input  wire [31:0] s_axi_awaddr,
+  input  wire [ADDR_WIDTH-1:0] s_axi_awaddr,
   input  wire [2:0]  s_axi_awprot,
   // write data
   input  wire        s_axi_wvalid,
@@ -43,7 +51,7 @@ module specular_ip_axi #(
   // read address
   input  wire        s_axi_arvalid,
   output wire        s_axi_arready,
-  input  wire [31:0] s_axi_araddr,
+  input  wire [ADDR_WIDTH-1:0] s_axi_araddr,
   input  wire [2:0]  s_axi_arprot,
   // read data
   output reg         s_axi_rvalid,
@@ -55,7 +63,7 @@ module specular_ip_axi #(
 );
   // ---- write channel: one holding register for AW, one for W ----
   reg        aw_held, w_held;
-  reg [31:0] aw_addr;
+  reg [ADDR_WIDTH-1:0] aw_addr;
   reg [31:0] w_data;
   reg [3:0]  w_strb;
   reg        op_running;       // an operation is in flight: its START's response waits
@@ -71,6 +79,21 @@ module specular_ip_axi #(
   wire do_read = s_axi_arvalid && s_axi_arready;
   wire [31:0] rd_data;
   wire [1:0] rd_resp;
+
+  // ---- the offsets in the map, zero-extended to the register block's 32 bits ----
+  wire [31:0] wr_offset, rd_offset;
+  generate
+    if (ADDR_WIDTH < 15 || ADDR_WIDTH > 32) begin : ADDR_WIDTH_OUT_OF_RANGE
+      // Not a module: every tool stops here naming this block (allowed: 15 to 32).
+      specular_ip_axi_ADDR_WIDTH_must_be_15_to_32 refused ();
+    end else if (ADDR_WIDTH == 32) begin : offset_full
+      assign wr_offset = aw_addr;
+      assign rd_offset = s_axi_araddr;
+    end else begin : offset_low
+      assign wr_offset = {{(32 - ADDR_WIDTH){1'b0}}, aw_addr};
+      assign rd_offset = {{(32 - ADDR_WIDTH){1'b0}}, s_axi_araddr};
+    end
+  endgenerate
 
   // ---- the operation (control_unit_sync): the device takes the start at edge 0 and
   // runs pass 1 (op_pass1); register 9 holds pass 1 after edge 1 (op_pass2, taken into
@@ -91,7 +114,7 @@ module specular_ip_axi #(
     if (!aresetn) begin
       aw_held <= 1'b0;
       w_held <= 1'b0;
-      aw_addr <= 32'd0;
+      aw_addr <= {ADDR_WIDTH{1'b0}};
       w_data <= 32'd0;
       w_strb <= 4'd0;
       s_axi_bvalid <= 1'b0;
@@ -152,9 +175,9 @@ module specular_ip_axi #(
     .PIN19_H_VALUE(PIN19_H_VALUE), .PIN20_A_VALUE(PIN20_A_VALUE)
   ) regs (
     .clk(aclk), .rst_n(aresetn),
-    .wr_valid(do_write), .wr_addr(aw_addr), .wr_data(w_data), .wr_strb(w_strb),
+    .wr_valid(do_write), .wr_addr(wr_offset), .wr_data(w_data), .wr_strb(w_strb),
     .wr_resp(wr_resp), .wr_starts(wr_starts),
-    .rd_valid(do_read), .rd_addr(s_axi_araddr), .rd_data(rd_data), .rd_resp(rd_resp),
+    .rd_valid(do_read), .rd_addr(rd_offset), .rd_data(rd_data), .rd_resp(rd_resp),
     .hw_busy(op_running), .hw_done(op_result),
     // register 1 and register 9 after pass 1: there while select 36 is high
     .hw_reg1_we(op_pass2), .hw_reg1_d({15'd0, obs_reg1_q}),

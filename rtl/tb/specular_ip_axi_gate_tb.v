@@ -55,7 +55,8 @@ module specular_ip_axi_gate_tb;
   always #(T / 2) aclk = ~aclk;   // rising edges at T/2 + k T, falling at k T
 
   reg         awvalid = 1'b0, wvalid = 1'b0, bready = 1'b0, arvalid = 1'b0, rready = 1'b0;
-  reg  [31:0] awaddr = 32'd0, wdata = 32'd0, araddr = 32'd0;
+  reg  [31:0] wdata = 32'd0;
+  reg  [14:0] awaddr = 15'd0, araddr = 15'd0;   // the IP's default ADDR_WIDTH: offsets in the map
   reg  [3:0]  wstrb = 4'd0;
   wire        awready, wready, bvalid, arready, rvalid, done_irq;
   wire [1:0]  bresp, rresp;

@@ -21,12 +21,22 @@ LIB = "/usr/share/qflow/tech/osu018/osu018_stdcells.lib"
 
 
 def ports(rtl):
+    """The top's ports (direction, name, width) at its parameters' integer defaults: a
+    range may be an expression of them (`[ADDR_WIDTH-1:0]`)."""
     text = re.sub(r"//.*", "", open(rtl).read())
-    header = text[text.index("module specular_ip_axi"):]
-    header = header[header.index(") (") + 3:header.index(");")]
+    module = text[text.index("module specular_ip_axi"):]
+    defaults = {m.group(1): int(m.group(2))
+                for m in re.finditer(r"\b(\w+)\s*=\s*(\d+)\b", module[:module.index(") (")])}
+    header = module[module.index(") (") + 3:module.index(");")]
+
+    def value(expression):
+        if not re.fullmatch(r"[\w\s+\-*()]+", expression):
+            raise ValueError(f"a port range this test cannot read: {expression}")
+        return int(eval(expression, {"__builtins__": {}}, dict(defaults)))
+
     found = []
-    for m in re.finditer(r"\b(input|output)\s+(?:wire|reg)?\s*(?:\[(\d+):(\d+)\])?\s*(\w+)", header):
-        width = int(m.group(2)) - int(m.group(3)) + 1 if m.group(2) else 1
+    for m in re.finditer(r"\b(input|output)\s+(?:wire|reg)?\s*(?:\[([^:\]]+):([^\]]+)\])?\s*(\w+)", header):
+        width = value(m.group(2)) - value(m.group(3)) + 1 if m.group(2) else 1
         found.append((m.group(1), m.group(4), width))
     return found
 

@@ -10,7 +10,7 @@
 // bits of the address and the interconnect selects it by the 17 above, so IP_BASE must
 // be a multiple of 0x8000. RAM_BYTES is a power of two and RAM_BASE a multiple of it;
 // the two windows may not overlap (the interconnect stops elaboration otherwise).
-// done_irq is the IP's: a level, high while STATUS.DONE is set (and CONTROL's enable).
+// done_irq is the IP's: a level, active high, high while STATUS.DONE is set.
 `default_nettype none
 
 module specular_soc #(

@@ -91,9 +91,12 @@ module specular_soc_replay_tb;
         fields = $sscanf(text, "%h %h %h %h %h %h", op, offset, data, strb, resp, extra);
         if (blank(text)) begin
           // nothing to replay
-        end else if (fields != 5 || ^{op, offset, data, strb, resp} === 1'bx) begin
-          $fatal(1, "specular_soc_replay_tb: %0s line %0d: %0d of 5 hex fields (<op> <offset> <data> <strb> <resp>)",
-                 TRACE, line, fields);
+        end else if (fields != 5) begin
+          $fatal(1, "specular_soc_replay_tb: %0s line %0d: %0d fields, allowed 5 hex (<op> <offset> <data> <strb> <resp>)",
+                 TRACE, line, fields < 0 ? 0 : fields);
+        end else if (^{op, offset, data, strb, resp} === 1'bx) begin
+          $fatal(1, "specular_soc_replay_tb: %0s line %0d: a field with x or z, allowed hex digits 0-9 a-f",
+                 TRACE, line);
         end else begin
           if (op > 1)
             $fatal(1, "specular_soc_replay_tb: %0s line %0d: op %0h (allowed: 0 read, 1 write)", TRACE, line, op);

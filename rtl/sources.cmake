@@ -13,4 +13,8 @@ set(SPECULAR_RTL_ALL_SOURCES ${SPECULAR_RTL_DEVICE_SOURCES} ${SPECULAR_RTL_DESIG
 # register map, the AXI4-Lite top, and the checker of its AXI4-Lite rules.
 set(SPECULAR_RTL_IP_SOURCES ${SPECULAR_RTL_DIR}/ip/specular_reg_block.v ${SPECULAR_RTL_DIR}/ip/specular_ip_axi.v)
 set(SPECULAR_RTL_IP_PROPS ${SPECULAR_RTL_DIR}/ip/specular_ip_axi_props.v)
+# soc/: the integrator's example, specular_soc (docs/rtl_ip.md, "Placing the IP in an SoC"):
+# an AXI4-Lite interconnect passing full addresses, a RAM, and the IP at a base of its own.
+set(SPECULAR_RTL_SOC_SOURCES ${SPECULAR_RTL_DIR}/soc/axi_lite_interconnect.v
+    ${SPECULAR_RTL_DIR}/soc/axi_lite_ram.v ${SPECULAR_RTL_DIR}/soc/specular_soc.v)
 set(SPECULAR_RTL_INCLUDE_DIR ${SPECULAR_RTL_DIR}/design_space)

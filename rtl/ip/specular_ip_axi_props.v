@@ -15,7 +15,11 @@
 `default_nettype none
 
 module specular_ip_axi_props #(
-  parameter MAX_WAIT = 8  // cycles from a complete request to its response, at most
+  parameter MAX_WAIT = 8,        // cycles from a complete request to its response, at most
+  // requests taken and not yet answered, at most: the IP's one holding register each
+  // (an AW or W waiting beside one answered); an interconnect's port takes more (1 to 6)
+  parameter MAX_OPEN_WRITES = 2,
+  parameter MAX_OPEN_READS = 1
 ) (
   input wire        aclk,
   input wire        aresetn,
@@ -106,8 +110,9 @@ module specular_ip_axi_props #(
       `SPECULAR_AXI_SLAVE(!rvalid || ar_open != 3'd0, "a read response only for an AR taken and not answered")
       `SPECULAR_AXI_SLAVE(b_wait <= MAX_WAIT, "each write answered within MAX_WAIT cycles")
       `SPECULAR_AXI_SLAVE(r_wait <= MAX_WAIT, "each read answered within MAX_WAIT cycles")
-      `SPECULAR_AXI_SLAVE(aw_open <= 3'd2 && w_open <= 3'd2 && ar_open <= 3'd1,
-                          "at most one request waiting in each holding register")
+      `SPECULAR_AXI_SLAVE({29'd0, aw_open} <= MAX_OPEN_WRITES && {29'd0, w_open} <= MAX_OPEN_WRITES &&
+                          {29'd0, ar_open} <= MAX_OPEN_READS,
+                          "at most MAX_OPEN_WRITES writes and MAX_OPEN_READS reads taken and not answered")
     end
   end
 `undef SPECULAR_AXI_SLAVE

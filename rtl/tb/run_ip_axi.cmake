@@ -13,8 +13,9 @@ execute_process(COMMAND ${SPECULAR_TB} --random ${COUNT} --seed ${SEED} --format
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "specular_tb --random failed (status ${status}): ${summary}")
 endif()
+get_filename_component(tb_dir ${TESTBENCH} DIRECTORY)  # its includes: axi_lite_master.vh, ...
 execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/tb.vvp -s specular_ip_axi_tb
+  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/tb.vvp -s specular_ip_axi_tb -I${tb_dir}
           "-Pspecular_ip_axi_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
           "-Pspecular_ip_axi_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
           "-Pspecular_ip_axi_tb.VECTORS=\"${SCRATCH}/vectors.csv\""

@@ -10,7 +10,8 @@
 //     W1C and sub-word merges;
 //   - a read and a write issued together, and STATUS.BUSY read while an operation runs.
 // The AXI4-Lite rules are checked on every edge (specular_ip_axi_props.v). Stops with
-// $fatal on the first mismatch.
+// $fatal on the first mismatch. The master's tasks are axi_lite_master.vh's, the vectors'
+// reader specular_vectors.vh's (both in this folder: iverilog -I).
 `default_nettype none
 `timescale 1ns / 1ps
 
@@ -21,15 +22,8 @@ module specular_ip_axi_tb;
   parameter SEED = 1;
   parameter MAX_VECTORS = 4096;
 
-  reg aclk = 1'b0, aresetn = 1'b0;
-  always #5 aclk = ~aclk;
-
-  reg         awvalid = 1'b0, wvalid = 1'b0, bready = 1'b0, arvalid = 1'b0, rready = 1'b0;
-  reg  [31:0] awaddr = 32'd0, wdata = 32'd0, araddr = 32'd0;
-  reg  [3:0]  wstrb = 4'd0;
-  wire        awready, wready, bvalid, arready, rvalid, done_irq;
-  wire [1:0]  bresp, rresp;
-  wire [31:0] rdata;
+  `include "axi_lite_master.vh"  // aclk, aresetn, the master's signals and tasks
+  wire done_irq;
 
   // ADDR_WIDTH 32, as the TLM `axi` target verilates it: the refusals above the map
   // (0x8000 and up, 0xDEADBEEF) reach the IP and are its to answer.
@@ -50,127 +44,12 @@ module specular_ip_axi_tb;
     .arvalid(arvalid), .arready(arready), .araddr(araddr),
     .rvalid(rvalid), .rready(rready), .rdata(rdata), .rresp(rresp));
 
-  localparam [1:0] OKAY = 2'b00, SLVERR = 2'b10, DECERR = 2'b11;
   localparam [31:0] STATUS = 32'h00C, CONTROL = 32'h010, ERROR_ADDRESS = 32'h018;
   localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;
   localparam [31:0] OUT_R = 32'h040, REG1 = 32'h050, REG9_PASS1_LO = 32'h054;
   localparam [31:0] ROM38_K = 32'h064, NORM39 = 32'h068;
   localparam [31:0] OPERANDS = 32'h080, RESULTS = 32'h0A0;
 
-  integer seed = SEED;
-  // 0..3 cycles of stall when STALL is set
-  function integer stall;
-    input integer dummy;
-    begin
-      stall = STALL ? ({$random(seed)} % 4) : 0;
-    end
-  endfunction
-  task cycles;
-    input integer k;
-    integer i;
-    begin
-      for (i = 0; i < k; i = i + 1) @(posedge aclk);
-      #1;
-    end
-  endtask
-
-  // ---- the master's channels, each with its own stalls ----
-  task send_aw;
-    input [31:0] address;
-    begin
-      cycles(stall(0));
-      awaddr = address;
-      awvalid = 1'b1;
-      @(posedge aclk);
-      while (!awready) @(posedge aclk);
-      #1 awvalid = 1'b0;
-      awaddr = 32'hDEAD_BEEF;
-    end
-  endtask
-  task send_w;
-    input [31:0] data;
-    input [3:0] strobes;
-    begin
-      cycles(stall(0));
-      wdata = data;
-      wstrb = strobes;
-      wvalid = 1'b1;
-      @(posedge aclk);
-      while (!wready) @(posedge aclk);
-      #1 wvalid = 1'b0;
-      wdata = 32'hDEAD_BEEF;
-    end
-  endtask
-  task take_b;
-    output [1:0] response;
-    begin
-      cycles(stall(0));
-      bready = 1'b1;
-      @(posedge aclk);
-      while (!bvalid) @(posedge aclk);
-      response = bresp;
-      #1 bready = 1'b0;
-    end
-  endtask
-  task write_strobed;
-    input [31:0] address;
-    input [31:0] data;
-    input [3:0] strobes;
-    input [1:0] expected;
-    reg [1:0] response;
-    begin
-      fork
-        send_aw(address);
-        send_w(data, strobes);
-        take_b(response);
-      join
-      if (response !== expected)
-        $fatal(1, "MISMATCH write 0x%08h of 0x%08h (strobes %b): response %b, expected %b",
-               address, data, strobes, response, expected);
-    end
-  endtask
-  task write;
-    input [31:0] address;
-    input [31:0] data;
-    input [1:0] expected;
-    begin
-      write_strobed(address, data, 4'b1111, expected);
-    end
-  endtask
-  task read_raw;
-    input [31:0] address;
-    output [31:0] data;
-    output [1:0] response;
-    begin
-      cycles(stall(0));
-      araddr = address;
-      arvalid = 1'b1;
-      @(posedge aclk);
-      while (!arready) @(posedge aclk);
-      #1 arvalid = 1'b0;
-      araddr = 32'hDEAD_BEEF;
-      cycles(stall(0));
-      rready = 1'b1;
-      @(posedge aclk);
-      while (!rvalid) @(posedge aclk);
-      data = rdata;
-      response = rresp;
-      #1 rready = 1'b0;
-    end
-  endtask
-  task expect_read;
-    input [31:0] address;
-    input [31:0] expected;
-    input [1:0] expected_response;
-    reg [31:0] data;
-    reg [1:0] response;
-    begin
-      read_raw(address, data, response);
-      if (response !== expected_response || (response == OKAY && data !== expected))
-        $fatal(1, "MISMATCH read 0x%08h: 0x%08h response %b, expected 0x%08h response %b",
-               address, data, response, expected, expected_response);
-    end
-  endtask
   // A refusal: STATUS reads error and CAUSE, ERROR_ADDRESS the offset; then cleared.
   task expect_refusal;
     input [7:0] cause;
@@ -186,53 +65,12 @@ module specular_ip_axi_tb;
     end
   endtask
 
-  // ---- vectors (specular_tb --format csv: Core's bits) ----
-  integer v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1], v_b [0:MAX_VECTORS-1];
-  reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
-             v_out26 [0:MAX_VECTORS-1];
-  reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
-  real v_norm [0:MAX_VECTORS-1];
+  `include "specular_vectors.vh"  // read_vectors: VECTORS into v_*[0:count-1]
   // ROM 38's table as specular_romgen writes it from the C++ tables (rtl_rom_contents
   // checks the image against them): ROM38_K after an operation is word n of bank 0
   // (CONFIG's default: patent constants and normalisation).
   reg [24:0] rom38_table [0:16383];
   initial $readmemh(ROM38_IMAGE, rom38_table);
-  integer count;
-  task read_vectors;
-    integer fd, fields, n, r, g, b, pass;
-    real cos, skip, norm;
-    reg [63:0] h1, h2, h3, h4, h5, h6;
-    reg [8*2048-1:0] header;
-    begin
-      fd = $fopen(VECTORS, "r");
-      if (fd == 0) $fatal(1, "specular_ip_axi_tb: cannot read %0s", VECTORS);
-      fields = $fgets(header, fd);
-      count = 0;
-      fields = 25;
-      while (!$feof(fd) && fields == 25) begin
-        fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
-                              "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
-                         cos, n, r, g, b, skip, skip, skip, norm, skip, skip, skip, skip, skip,
-                         skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
-        if (fields == 25) begin
-          if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_tb: more than %0d vectors", MAX_VECTORS);
-          v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
-          v_norm[count] = norm;
-          v_reg1[count] = h1[31:0];
-          // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
-          v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
-          v_pass2[count] = {{27{h3[36]}}, h3[36:0]};
-          v_out24[count] = h4[31:0]; v_out25[count] = h5[31:0]; v_out26[count] = h6[31:0];
-          count = count + 1;
-        end else if (fields > 0) begin
-          $fatal(1, "specular_ip_axi_tb: %0s line %0d: %0d of 25 fields", VECTORS, count + 2, fields);
-        end
-      end
-      $fclose(fd);
-      if (count == 0) $fatal(1, "specular_ip_axi_tb: no vectors in %0s", VECTORS);
-    end
-  endtask
-
   // ---- checks ----
   task check_reset_values;
     integer k;
@@ -531,9 +369,7 @@ module specular_ip_axi_tb;
   initial begin
     read_vectors;
     vectors_read = 1'b1;
-    cycles(3);
-    aresetn = 1'b1;
-    cycles(1);
+    reset_release;
     check_reset_values;
     for (i = 0; i < count; i = i + 1) run_vector(i, i % 3 == 2);
     check_misuse;

@@ -162,10 +162,21 @@ class HeaderParser {
     }
     fail("a number, a parameter or '('");
   }
-  /// `[msb:lsb]`, evaluated.
-  std::pair<std::int64_t, std::int64_t> range() {
+  /// `[msb:lsb]`, evaluated; the msb's tokens, spaced, in `msb_text` when one names a
+  /// parameter.
+  std::pair<std::int64_t, std::int64_t> range(std::string* msb_text = nullptr) {
     expect_symbol("[");
+    const std::size_t first = pos_;
     const std::int64_t msb = expression();
+    if (msb_text != nullptr) {
+      msb_text->clear();
+      bool names_parameter = false;
+      for (std::size_t i = first; i < pos_; ++i) {
+        names_parameter = names_parameter || tokens_[i].kind == Token::identifier;
+        *msb_text += (i == first ? "" : " ") + tokens_[i].text;
+      }
+      if (!names_parameter) msb_text->clear();
+    }
     expect_symbol(":");
     const std::int64_t lsb = expression();
     expect_symbol("]");
@@ -206,6 +217,7 @@ class HeaderParser {
     std::string direction;
     bool is_signed = false, is_vector = false;
     std::pair<std::int64_t, std::int64_t> bits{0, 0};
+    std::string msb_text;
     for (;;) {
       if (is_identifier("input") || is_identifier("output") || is_identifier("inout")) {
         const std::string word = tokens_[pos_++].text;
@@ -213,7 +225,8 @@ class HeaderParser {
         accept_identifier("wire") || accept_identifier("reg") || accept_identifier("logic");
         is_signed = accept_identifier("signed");
         is_vector = is_symbol("[");
-        bits = is_vector ? range() : std::make_pair<std::int64_t, std::int64_t>(0, 0);
+        msb_text.clear();
+        bits = is_vector ? range(&msb_text) : std::make_pair<std::int64_t, std::int64_t>(0, 0);
       } else if (direction.empty()) {
         fail("'input' or 'output'");
       }
@@ -224,6 +237,7 @@ class HeaderParser {
       p.is_vector = is_vector;
       p.msb = static_cast<int>(bits.first);
       p.lsb = static_cast<int>(bits.second);
+      p.msb_expression = msb_text;
       m.ports.push_back(p);
       if (accept_symbol(")")) return;
       expect_symbol(",");

@@ -29,6 +29,7 @@ struct VerilogPort {
   std::string direction;  ///< "in" or "out" (IP-XACT's words)
   bool is_signed = false;
   int msb = 0, lsb = 0;   ///< at the parameters' defaults; both 0 for a scalar
+  std::string msb_expression;  ///< the msb as written when it names a parameter (ADDR_WIDTH - 1)
   bool is_vector = false;
 };
 

@@ -13,6 +13,10 @@
   ip_description_check.py rtl-ports EXPORT SOURCE_DIR SCRATCH YOSYS ROM_DIR
       the component's Verilog ports, module parameters and file sets against Yosys's
       reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v.
+  ip_description_check.py resets EXPORT SOURCE_DIR SCRATCH IVERILOG VVP ROM_DIR
+      specular_ip_axi.xml's resets of CONFIG, PIN19_H and PIN20_A, evaluated with
+      parameter values other than the defaults, against what the IP reads back when
+      Icarus elaborates it with those values (ip_reset_readback_tb.v).
   ip_description_check.py current EXPORT SOURCE_DIR SCRATCH
       the committed ip/ files equal what specular_ip_export writes now.
 
@@ -560,6 +564,66 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
     return fail.finish("rtl-ports")
 
 
+# Parameter sets other than the defaults: every field of CONFIG changed (normalisation
+# energy / device-energy, saturation literal, constants minimax / minimax-half, other
+# widths), h and a other than the patent's (a negative), and ADDR_WIDTH at 16 and 32.
+RESET_CASES = (
+    {},
+    {"CONFIG_VALUE": 0x080D1051, "PIN19_H_VALUE": 0x66, "PIN20_A_VALUE": 0x3F0000, "ADDR_WIDTH": 16},
+    {"CONFIG_VALUE": 0x0A0C0E33, "PIN19_H_VALUE": 0x2AB, "PIN20_A_VALUE": 0xFFC00000, "ADDR_WIDTH": 32},
+)
+
+
+def check_resets(export, source, scratch, iverilog, vvp, rom_dir):
+    from lxml import etree
+    fail = Failures("the RTL's read-back")
+    root = etree.parse(os.path.join(source, "ip", "specular_ip_axi.xml")).getroot()
+    block = root.find(f"{Q}memoryMaps/{Q}memoryMap/{Q}addressBlock")
+    registers = {text_of(r, "name"): r for r in block.findall(Q + "register")}
+    rtl = os.path.join(source, "rtl")
+    sources = sorted(os.path.join(rtl, d, f) for d in ("device", "primitives", "ip")
+                     for f in os.listdir(os.path.join(rtl, d))
+                     if f.endswith(".v") and not f.endswith("_props.v"))
+    bench = os.path.join(HERE, "ip_reset_readback_tb.v")
+    for n, case in enumerate(RESET_CASES):
+        where = ", ".join(f"{k}={v:#x}" if k != "ADDR_WIDTH" else f"{k}={v}" for k, v in case.items()) \
+            or "defaults"
+        out = os.path.join(scratch, f"case{n}.vvp")
+        args = [iverilog, "-g2005", "-Wall", "-Wno-timescale", "-o", out, "-s", "ip_reset_readback_tb",
+                f'-Pip_reset_readback_tb.ROM5_IMAGE="{rom_dir}/rom5.hex"',
+                f'-Pip_reset_readback_tb.ROM38_IMAGE="{rom_dir}/rom38.hex"']
+        args += [f"-Pip_reset_readback_tb.{k}={v}" for k, v in case.items()]
+        built = subprocess.run(args + sources + [bench], capture_output=True, text=True)
+        if built.returncode != 0:
+            fail.check(False, f"{where}: iverilog failed: {built.stderr.strip()[:400]}")
+            continue
+        ran = subprocess.run([vvp, "-n", out], capture_output=True, text=True, cwd=scratch)
+        read = {m.group(1): (int(m.group(2), 16), int(m.group(3)))
+                for m in re.finditer(r"READ (\w+) 0x([0-9a-fA-F]+) resp (\d+)", ran.stdout)}
+        fail.equal(sorted(read), sorted(CONFIGURED), f"{where}: registers read")
+        parameters = component_parameters(root, case)
+        for name, (value, response) in read.items():
+            fail.equal(response, 0, f"{where}: {name} response")
+            xr = registers.get(name)
+            if xr is None:
+                fail.check(False, f"no register {name} in specular_ip_axi.xml")
+                continue
+            described, mask = 0, 0
+            for xf in xr.findall(Q + "field"):
+                shift = sv_number(text_of(xf, "bitOffset"))
+                width = sv_number(text_of(xf, "bitWidth"))
+                reset = sv_expression(xf.find(f"{Q}resets/{Q}reset/{Q}value").text, parameters)
+                fail.check(0 <= reset < 1 << width,
+                           f"{where}: {name}.{text_of(xf, 'name')} reset {reset:#x} wider than {width} bits")
+                described |= reset << shift
+                mask |= ((1 << width) - 1) << shift
+            fail.check(described == value & mask,
+                       f"{where}: {name} reset in the XML {described:#010x} (its fields' bits "
+                       f"{mask:#010x}), the RTL reads {value:#010x}")
+            print(f"resets: {where}: {name} XML {described:#010x} RTL {value:#010x}")
+    return fail.finish("resets")
+
+
 def check_current(export, source, scratch):
     fail = Failures()
     fresh = {"specular_unit.xml": "--ipxact", "specular_unit.rdl": "--systemrdl"}
@@ -581,7 +645,8 @@ def check_current(export, source, scratch):
 
 def main(argv):
     commands = {"ipxact": (check_ipxact, 3), "systemrdl": (check_systemrdl, 3),
-                "rtl-ports": (check_rtl_ports, 5), "current": (check_current, 3)}
+                "rtl-ports": (check_rtl_ports, 5), "current": (check_current, 3),
+                "resets": (check_resets, 6)}
     if len(argv) < 2 or argv[1] not in commands or len(argv) - 2 != commands[argv[1]][1]:
         print(__doc__, file=sys.stderr)
         return 2

@@ -510,6 +510,21 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
             type_names = [t.text for t in wire.iter(Q + "typeName")]
             fail.equal(type_names, ["wire signed" if yp.get("signed") else "wire"], f"{top}.{name} type")
             fail.check(xp.find(Q + "isPresent") is None, f"{top}.{name}: isPresent (every port is its top's)")
+        # a component with parameters of its own (specular_ip_axi): its ports' widths
+        # evaluated at another value of each integer parameter that sizes a port, against
+        # Yosys elaborating the top with that value (chparam)
+        for pid, other in (("ADDR_WIDTH", 32),) if "ADDR_WIDTH" in parameters else ():
+            changed = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{TOP_FOLDER[top]}/{top}.v; "
+                                 f"chparam -set {pid} {other} {top}; proc",
+                                 os.path.join(scratch, f"{top}_{pid}_{other}.json"))[top]["ports"]
+            for name, yp in changed.items():
+                vector = xml_ports[name].find(f"{Q}wire/{Q}vectors/{Q}vector") if name in xml_ports else None
+                if vector is None:
+                    continue
+                values = dict(parameters, **{pid: other})
+                width = abs(sv_expression(text_of(vector, "left"), values) -
+                            sv_expression(text_of(vector, "right"), values)) + 1
+                fail.equal(width, len(yp["bits"]), f"{top}.{name} width at {pid}={other}")
         # the module parameters, in order, with their defaults
         inst = instantiations.get(view)
         fail.check(inst is not None, f"no componentInstantiation {view}")

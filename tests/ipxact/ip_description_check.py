@@ -17,6 +17,10 @@
       specular_ip_axi.xml's resets of CONFIG, PIN19_H and PIN20_A, evaluated with
       parameter values other than the defaults, against what the IP reads back when
       Icarus elaborates it with those values (ip_reset_readback_tb.v).
+  ip_description_check.py resolved EXPORT SOURCE_DIR SCRATCH
+      `specular_ip_export --ipxact-resolved --set ...` (numbers for tools that evaluate no
+      expression): every number in it equal to specular_ip_axi.xml's expression evaluated
+      with the same values; bad --set values refused with exit 2 and the allowed range.
   ip_description_check.py current EXPORT SOURCE_DIR SCRATCH
       the committed ip/ files equal what specular_ip_export writes now.
 
@@ -639,6 +643,45 @@ def check_resets(export, source, scratch, iverilog, vvp, rom_dir):
     return fail.finish("resets")
 
 
+def check_resolved(export, source, scratch):
+    from lxml import etree
+    fail = Failures("specular_ip_axi.xml evaluated")
+    expressions = etree.parse(os.path.join(source, "ip", "specular_ip_axi.xml")).getroot()
+    for n, case in enumerate(RESET_CASES):
+        out = os.path.join(scratch, f"resolved{n}.xml")
+        args = [export, "--source-dir", source, "--ipxact-resolved", out]
+        if case:
+            args += ["--set", ",".join(f"{k}={v:#x}" for k, v in case.items())]
+        subprocess.run(args, check=True)
+        resolved = etree.parse(out).getroot()
+        parameters = component_parameters(expressions, case)
+        # the same elements in the same order: every place an expression may stand
+        places = {"reset": "resets/{0}reset/{0}value", "range": "range", "left": "vectors/{0}vector/{0}left"}
+        for label, place in places.items():
+            path = ".//" + Q + place.format(Q)
+            want = [sv_expression(e.text, parameters) for e in expressions.iterfind(path)]
+            got = []
+            for e in resolved.iterfind(path):
+                try:
+                    got.append(sv_number(e.text))
+                except ValueError:
+                    got.append(f"not a number: {e.text!r}")
+            fail.equal(got, want, f"case {n}: every {label}")
+        values = {text_of(p, "name"): text_of(p, "value")
+                  for p in resolved.iterfind(f".//{Q}moduleParameter")}
+        for name, v in case.items():
+            fail.equal(sv_number(values.get(name, "0")), v, f"case {n}: moduleParameter {name}")
+    # bad values: refused, the range named
+    for setting, words in (("ADDR_WIDTH=14", "15..32"), ("ADDR_WIDTH=33", "15..32"),
+                           ("CONFIG_VALUE=0x100000000", "0..4294967295"), ("NO_SUCH=1", "NO_SUCH")):
+        run = subprocess.run([export, "--source-dir", source, "--ipxact-resolved",
+                              os.path.join(scratch, "bad.xml"), "--set", setting],
+                             capture_output=True, text=True)
+        fail.check(run.returncode == 2 and words in run.stderr,
+                   f"--set {setting}: exit {run.returncode}, {run.stderr.strip()!r}; expected 2 naming {words}")
+    return fail.finish("resolved")
+
+
 def check_current(export, source, scratch):
     fail = Failures()
     fresh = {"specular_unit.xml": "--ipxact", "specular_unit.rdl": "--systemrdl"}
@@ -661,7 +704,7 @@ def check_current(export, source, scratch):
 def main(argv):
     commands = {"ipxact": (check_ipxact, 3), "systemrdl": (check_systemrdl, 3),
                 "rtl-ports": (check_rtl_ports, 5), "current": (check_current, 3),
-                "resets": (check_resets, 6)}
+                "resets": (check_resets, 6), "resolved": (check_resolved, 3)}
     if len(argv) < 2 or argv[1] not in commands or len(argv) - 2 != commands[argv[1]][1]:
         print(__doc__, file=sys.stderr)
         return 2

@@ -176,7 +176,13 @@ std::string configuring_parameter(Reg reg) {
 
 /// `windows` false: the map of specular_ip_axi, which has no batch windows (holes there,
 /// BATCH_CAPACITY 0: docs/decisions.md).
-void write_memory_map(Xml& x, bool windows) {
+void write_memory_map(Xml& x, bool windows, const ComponentFacts& facts) {
+  // resolved: the values the top was read with, in place of expressions of them
+  const auto value_of = [&facts](const std::string& name) {
+    for (const VerilogParameter& p : facts.tops.front().parameters)
+      if (p.name == name) return p.value;
+    throw std::invalid_argument("write_memory_map: no parameter " + name);
+  };
   x.open("memoryMaps");
   x.open("memoryMap");
   x.leaf("name", "registers");
@@ -193,7 +199,16 @@ void write_memory_map(Xml& x, bool windows) {
   x.leaf("baseAddress", hex_literal(0));
   // specular_ip_axi answers (DECERR above the registers) in the whole window its address
   // width decodes: an expression of the component parameter ADDR_WIDTH
-  x.leaf("range", windows ? hex_literal(map_size) : "2 ** ADDR_WIDTH");
+  if (windows) {
+    x.leaf("range", hex_literal(map_size));
+  } else if (facts.resolved) {
+    char range[24];
+    std::snprintf(range, sizeof range, "'h%llX",
+                  static_cast<unsigned long long>(std::uint64_t{1} << value_of("ADDR_WIDTH")));
+    x.leaf("range", range);
+  } else {
+    x.leaf("range", "2 ** ADDR_WIDTH");
+  }
   x.leaf("width", "32");
   x.leaf("usage", "register");
   for (const RegisterInfo& row : register_map) {
@@ -205,10 +220,15 @@ void write_memory_map(Xml& x, bool windows) {
                                                    "offsets answer DECERR; the TLM-2.0 targets "
                                                    "read ") + std::to_string(batch_capacity) + ")");
     } else if (row.words == 1 && !windows && !configuring_parameter(row.reg).empty()) {
-      write_register(x, row.reg, row.offset, row.reset,
-                     row.description + std::string(" (on this IP: parameter ") +
-                         configuring_parameter(row.reg) + ")",
-                     configuring_parameter(row.reg));
+      const std::string parameter = configuring_parameter(row.reg);
+      if (facts.resolved)
+        write_register(x, row.reg, row.offset, static_cast<std::uint32_t>(value_of(parameter)),
+                       row.description + std::string(" (on this IP: parameter ") + parameter +
+                           ", resolved to " + hex_literal(static_cast<std::uint32_t>(value_of(parameter))) + ")");
+      else
+        write_register(x, row.reg, row.offset, row.reset,
+                       row.description + std::string(" (on this IP: parameter ") + parameter + ")",
+                       parameter);
     } else if (row.reg == Reg::batch_capacity) {
       write_register(x, row.reg, row.offset, row.reset,
                      row.description + std::string(" (") + std::to_string(batch_capacity) +
@@ -307,8 +327,9 @@ std::string parameter_value(const VerilogParameter& p) {
 /// The allowed range of a parameter the Verilog refuses outside it (specular_ip_axi.v's
 /// ADDR_WIDTH_OUT_OF_RANGE), as IP-XACT's minimum and maximum.
 std::string parameter_bounds(const VerilogModule& top, const VerilogParameter& p) {
-  if (top.name == "specular_ip_axi" && p.name == "ADDR_WIDTH") return " minimum=\"15\" maximum=\"32\"";
-  return "";
+  std::int64_t minimum = 0, maximum = 0;
+  if (!parameter_range(top.name, p.name, minimum, maximum)) return "";
+  return " minimum=\"" + std::to_string(minimum) + "\" maximum=\"" + std::to_string(maximum) + "\"";
 }
 
 /// specular_ip_axi's parameters as the component's, ids their names, so that expressions
@@ -361,7 +382,7 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
     x.open("moduleParameters");
     // specular_ip_axi's module parameters follow the component's parameters of the same
     // name (write_component_parameters), which its memory map and ports refer to too
-    const bool follows = top.name == "specular_ip_axi";
+    const bool follows = top.name == "specular_ip_axi" && !facts.resolved;
     for (const VerilogParameter& p : top.parameters) {
       x.open("moduleParameter", "parameterId=\"" + prefix_of_top(top) + "_" + p.name + "\"" +
                                     (follows ? "" : " resolve=\"user\"") + " type=\"" +
@@ -453,7 +474,7 @@ void write_ports(Xml& x, const ComponentFacts& facts) {
   // The Verilog top's ports, every one present (one top per component).
   const VerilogModule& top = facts.tops.front();
   for (const VerilogPort& p : top.ports)
-    write_wire_port(x, p, {view_of_top(top)}, top.name == "specular_ip_axi");
+    write_wire_port(x, p, {view_of_top(top)}, top.name == "specular_ip_axi" && !facts.resolved);
   x.close("ports");
 }
 
@@ -622,6 +643,17 @@ void write_interrupt_interface(Xml& x, const std::vector<std::string>& views) {
 
 }  // namespace
 
+bool parameter_range(const std::string& top, const std::string& name, std::int64_t& minimum,
+                     std::int64_t& maximum) {
+  // specular_ip_axi.v's generate block ADDR_WIDTH_OUT_OF_RANGE
+  if (top == "specular_ip_axi" && name == "ADDR_WIDTH") {
+    minimum = 15;
+    maximum = 32;
+    return true;
+  }
+  return false;
+}
+
 std::string ipxact_component(const ComponentFacts& facts) {
   if (facts.tops.size() != 1 || facts.top_files.size() != 1)
     throw std::invalid_argument("ipxact_component: " + facts.name + " has " +
@@ -679,7 +711,7 @@ std::string ipxact_component(const ComponentFacts& facts) {
     write_interrupt_interface(x, {view_of_top(facts.tops.front())});
   }
   if (facts.systemc || axi) x.close("busInterfaces");
-  if (facts.systemc || axi) write_memory_map(x, !axi);
+  if (facts.systemc || axi) write_memory_map(x, !axi, facts);
   x.open("model");
   write_views(x, facts);
   write_instantiations(x, facts);

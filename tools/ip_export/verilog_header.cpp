@@ -72,8 +72,9 @@ std::vector<Token> tokenise(const std::string& text, const std::string& path) {
 /// Recursive descent over the tokens of one module header.
 class HeaderParser {
  public:
-  HeaderParser(std::vector<Token> tokens, std::string path)
-      : tokens_(std::move(tokens)), path_(std::move(path)) {}
+  HeaderParser(std::vector<Token> tokens, std::string path,
+               std::map<std::string, std::int64_t> overrides = {})
+      : tokens_(std::move(tokens)), path_(std::move(path)), overrides_(std::move(overrides)) {}
 
   VerilogModule parse() {
     VerilogModule m;
@@ -203,6 +204,11 @@ class HeaderParser {
         p.text = tokens_[pos_++].text;
       } else {
         p.value = expression();
+        const auto set = overrides_.find(p.name);
+        if (set != overrides_.end()) {
+          p.value = set->second;
+          overrides_.erase(set);
+        }
         values_[p.name] = p.value;
       }
       m.parameters.push_back(p);
@@ -248,6 +254,10 @@ class HeaderParser {
   std::string path_;
   std::size_t pos_ = 0;
   std::map<std::string, std::int64_t> values_;
+  std::map<std::string, std::int64_t> overrides_;  ///< the ones not yet used
+
+ public:
+  const std::map<std::string, std::int64_t>& unused_overrides() const { return overrides_; }
 };
 
 std::string slurp(const std::string& path) {
@@ -260,9 +270,18 @@ std::string slurp(const std::string& path) {
 
 }  // namespace
 
-VerilogModule read_module_header(const std::string& path) {
-  HeaderParser parser(tokenise(slurp(path), path), path);
-  return parser.parse();
+VerilogModule read_module_header(const std::string& path,
+                                 const std::map<std::string, std::int64_t>& overrides) {
+  HeaderParser parser(tokenise(slurp(path), path), path, overrides);
+  VerilogModule m = parser.parse();
+  if (!parser.unused_overrides().empty()) {
+    std::string names;
+    for (const auto& p : m.parameters)
+      if (!p.is_string) names += (names.empty() ? "" : ", ") + p.name;
+    throw VerilogError(path + ": " + m.name + " has no integer parameter '" +
+                       parser.unused_overrides().begin()->first + "' (it has " + names + ")");
+  }
+  return m;
 }
 
 std::map<std::string, VerilogModule> read_modules(const std::vector<std::string>& dirs) {

@@ -13,6 +13,14 @@
   ip_description_check.py rtl-ports EXPORT SOURCE_DIR SCRATCH YOSYS ROM_DIR
       the component's Verilog ports, module parameters and file sets against Yosys's
       reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v.
+  ip_description_check.py resets EXPORT SOURCE_DIR SCRATCH IVERILOG VVP ROM_DIR
+      specular_ip_axi.xml's resets of CONFIG, PIN19_H and PIN20_A, evaluated with
+      parameter values other than the defaults, against what the IP reads back when
+      Icarus elaborates it with those values (ip_reset_readback_tb.v).
+  ip_description_check.py resolved EXPORT SOURCE_DIR SCRATCH
+      `specular_ip_export --ipxact-resolved --set ...` (numbers for tools that evaluate no
+      expression): every number in it equal to specular_ip_axi.xml's expression evaluated
+      with the same values; bad --set values refused with exit 2 and the allowed range.
   ip_description_check.py current EXPORT SOURCE_DIR SCRATCH
       the committed ip/ files equal what specular_ip_export writes now.
 
@@ -88,6 +96,54 @@ def sv_number(text):
     return int(t, 10)
 
 
+def sv_expression(text, parameters):
+    """An IP-XACT 2014 expression (SystemVerilog operators, literals as sv_number takes,
+    parameters by their parameterId) evaluated with `parameters` {id: int}. This test's
+    own evaluator: + - * / % ** << >> & | ^ ~ and parentheses, nothing else."""
+    import ast
+    literal = r"\d*'[hHdDbBoO][0-9a-fA-F_]+"
+    python = re.sub(literal, lambda m: str(sv_number(m.group(0))), text.strip())
+    tree = ast.parse(python, mode="eval")
+    operators = {ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b,
+                 ast.Mult: lambda a, b: a * b, ast.Div: lambda a, b: a // b,
+                 ast.Mod: lambda a, b: a % b, ast.Pow: lambda a, b: a ** b,
+                 ast.LShift: lambda a, b: a << b, ast.RShift: lambda a, b: a >> b,
+                 ast.BitAnd: lambda a, b: a & b, ast.BitOr: lambda a, b: a | b,
+                 ast.BitXor: lambda a, b: a ^ b}
+
+    def value(node):
+        if isinstance(node, ast.Expression):
+            return value(node.body)
+        if isinstance(node, ast.Constant) and isinstance(node.value, int):
+            return node.value
+        if isinstance(node, ast.Name):
+            if node.id not in parameters:
+                raise ValueError(f"{text!r}: no parameter with id {node.id!r}")
+            return parameters[node.id]
+        if isinstance(node, ast.BinOp) and type(node.op) in operators:
+            return operators[type(node.op)](value(node.left), value(node.right))
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.USub, ast.Invert)):
+            v = value(node.operand)
+            return -v if isinstance(node.op, ast.USub) else ~v & 0xFFFFFFFF
+        raise ValueError(f"{text!r}: not an expression this test evaluates")
+    return value(tree)
+
+
+def component_parameters(root, overrides=None):
+    """The component's parameters {parameterId: value}, `overrides` {name: value} set."""
+    values = {}
+    for p in root.findall(f"{Q}parameters/{Q}parameter"):
+        name = text_of(p, "name")
+        v = text_of(p, "value")
+        if overrides and name in overrides:
+            values[p.get("parameterId")] = overrides[name]
+        elif p.get("type") == "string":
+            values[p.get("parameterId")] = v
+        else:
+            values[p.get("parameterId")] = sv_expression(v, values)
+    return values
+
+
 def field_reset(word, f):
     return (word >> f["shift"]) & ((1 << f["width"]) - 1)
 
@@ -100,7 +156,7 @@ def text_of(element, tag):
     return None if child is None else child.text
 
 
-def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word):
+def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word, parameters=None):
     fields = xml_register.findall(Q + "field")
     fail.equal([text_of(f, "name") for f in fields], [f["name"] for f in cpp_fields],
                f"{where}: fields")
@@ -110,7 +166,7 @@ def check_ipxact_fields(fail, where, xml_register, cpp_fields, reset_word):
         fail.equal(sv_number(text_of(xf, "bitWidth")), cf["width"], f"{at} bitWidth")
         resets = xf.findall(f"{Q}resets/{Q}reset/{Q}value")
         # a memory window's words (reset_word None) have no reset
-        fail.equal([sv_number(r.text) for r in resets],
+        fail.equal([sv_expression(r.text, parameters or {}) for r in resets],
                    [] if reset_word is None else [field_reset(reset_word, cf)], f"{at} reset")
         access, mwv = IPXACT_ACCESS[cf["access"]]
         fail.equal(text_of(xf, "access"), access, f"{at} access")
@@ -146,6 +202,20 @@ def check_bus_interface(fail, root, bus_trees, names):
     interfaces = root.findall(f"{Q}busInterfaces/{Q}busInterface")
     fail.equal([text_of(bi, "name") for bi in interfaces], names, "bus interfaces")
     physical = {text_of(p, "name") for p in root.findall(f"{Q}model/{Q}ports/{Q}port")}
+    # done_irq: Xilinx's interrupt bus type, a master, level high, mapped to the port
+    for bi in [i for i in interfaces if text_of(i, "name") == "done_irq"]:
+        fail.equal(vlnv_ref(bi.find(Q + "busType")), ("xilinx.com", "signal", "interrupt", "1.0"),
+                   "done_irq busType")
+        refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
+        fail.equal([vlnv_ref(r) for r in refs], [("xilinx.com", "signal", "interrupt_rtl", "1.0")],
+                   "done_irq abstractionRef")
+        fail.check(bi.find(Q + "master") is not None, "done_irq: not a master (the IP drives it)")
+        fail.equal({text_of(p, "name"): text_of(p, "value") for p in bi.findall(f"{Q}parameters/{Q}parameter")},
+                   {"SENSITIVITY": '"LEVEL_HIGH"'}, "done_irq parameters")
+        mapped = [(pm.find(f"{Q}logicalPort/{Q}name").text, pm.find(f"{Q}physicalPort/{Q}name").text)
+                  for pm in bi.iter(Q + "portMap")]
+        fail.equal(mapped, [("INTERRUPT", "done_irq")], "done_irq portMap")
+        fail.check("done_irq" in physical, "done_irq: no port done_irq in the model")
     for bi in [i for i in interfaces if text_of(i, "name") == "socket"]:
         same(vlnv_ref(bi.find(Q + "busType")), vlnv_of(bus_def), "busType")
         refs = bi.findall(f"{Q}abstractionTypes/{Q}abstractionType/{Q}abstractionRef")
@@ -170,6 +240,10 @@ def check_bus_interface(fail, root, bus_trees, names):
             fail.check(pp in physical, f"s_axi portMap {lp}: no port {pp} in the model")
 
 
+# specular_ip_axi's registers that read a parameter (specular_ip_axi.v passes them to
+# specular_reg_block.v), and the defaults the C++ map's resets are
+CONFIGURED = {"CONFIG": "CONFIG_VALUE", "PIN19_H": "PIN19_H_VALUE", "PIN20_A": "PIN20_A_VALUE"}
+
 AXI4_LITE_SIGNALS = ("ACLK", "ARESETn", "AWVALID", "AWREADY", "AWADDR", "AWPROT", "WVALID",
                      "WREADY", "WDATA", "WSTRB", "BVALID", "BREADY", "BRESP", "ARVALID",
                      "ARREADY", "ARADDR", "ARPROT", "RVALID", "RREADY", "RDATA", "RRESP")
@@ -178,9 +252,9 @@ AXI4_LITE_SIGNALS = ("ACLK", "ARESETn", "AWVALID", "AWREADY", "AWADDR", "AWPROT"
 # The components, one per Verilog top (no port needs a parameter to say which top it is
 # of): their file, top, view, bus interfaces, and whether their map has the batch windows.
 COMPONENTS = {
-    "specular_unit.xml": ("specular_device", "rtl", ["socket"], True),
+    "specular_unit.xml": ("specular_device", "rtl", ["socket", "done_irq"], True),
     "specular_device_sync.xml": ("specular_device_sync", "rtl_sync", [], None),
-    "specular_ip_axi.xml": ("specular_ip_axi", "rtl_axi", ["s_axi"], False),
+    "specular_ip_axi.xml": ("specular_ip_axi", "rtl_axi", ["s_axi", "done_irq"], False),
 }
 
 
@@ -235,7 +309,13 @@ def check_memory_map(fail, file, root, memory_map, cpp, windows):
         return
     block = blocks[0]
     fail.equal(sv_number(text_of(block, "baseAddress")), 0, f"{file}: baseAddress")
-    fail.equal(sv_number(text_of(block, "range")), cpp["map_size"], f"{file}: range")
+    parameters = component_parameters(root)
+    fail.equal(sv_expression(text_of(block, "range"), parameters), cpp["map_size"], f"{file}: range")
+    if not windows:
+        # the IP answers (DECERR above its registers) in its whole ADDR_WIDTH window
+        for width in (15, 16, 32):
+            fail.equal(sv_expression(text_of(block, "range"), dict(parameters, ADDR_WIDTH=width)),
+                       1 << width, f"{file}: range at ADDR_WIDTH {width}")
     fail.equal(sv_number(text_of(block, "width")), 32, f"{file}: width")
     # the bus interface names this memory map
     refs = root.findall(f"{Q}busInterfaces/{Q}busInterface/{Q}slave/{Q}memoryMapRef")
@@ -250,6 +330,13 @@ def check_memory_map(fail, file, root, memory_map, cpp, windows):
         if name == "BATCH_CAPACITY" and not windows:
             resets = [0]  # the IP's BATCH_CAPACITY_VALUE
         fail.equal(sv_number(text_of(xe, "addressOffset")), row["offset"], f"{file}: {name} addressOffset")
+        if not windows and name in CONFIGURED:
+            # specular_ip_axi reads the parameter: each field's reset is an expression of it
+            for xf in xe.findall(Q + "field"):
+                for r in xf.findall(f"{Q}resets/{Q}reset/{Q}value"):
+                    fail.check(CONFIGURED[name] in r.text,
+                               f"{file}: {name}.{text_of(xf, 'name')} reset {r.text!r} is not an "
+                               f"expression of {CONFIGURED[name]}")
         if "aliases" in row:
             fail.equal(xe.tag, Q + "registerFile", f"{name}: an alias window is a registerFile")
             fail.equal(sv_number(text_of(xe, "range") or "0"), 4 * row["words"], f"{name} range")
@@ -259,7 +346,7 @@ def check_memory_map(fail, file, root, memory_map, cpp, windows):
                 fail.equal(sv_number(text_of(xr, "addressOffset")), 4 * w, f"{name}.{alias} addressOffset")
                 fail.equal(sv_number(text_of(xr, "size")), 32, f"{name}.{alias} size")
                 check_ipxact_fields(fail, f"{file}: {name}.{alias}", xr, by_name[alias]["fields"],
-                                    resets[w])
+                                    resets[w], parameters)
         else:
             fail.equal(xe.tag, Q + "register", f"{name}: a register")
             dims = [sv_number(d.text) for d in xe.findall(Q + "dim")]
@@ -268,7 +355,7 @@ def check_memory_map(fail, file, root, memory_map, cpp, windows):
             fail.check(len(set(resets)) == 1,
                        f"{name}: words with different resets cannot be one register array")
             check_ipxact_fields(fail, f"{file}: {name}", xe, row["fields"],
-                                None if row["words"] > 1 else resets[0])
+                                None if row["words"] > 1 else resets[0], parameters)
 
 
 # ---- SystemRDL -----------------------------------------------------------------------
@@ -309,47 +396,61 @@ def check_systemrdl(export, source, scratch):
     cpp = cpp_map(export, scratch)
     with open(os.path.join(source, "ip", "specular_unit.rdl"), encoding="utf-8") as f:
         rdl = systemrdl_subset.parse(f.read())
-    slot = rdl.addrmaps.get("specular_unit")
-    fail.check(slot is not None, "no addrmap specular_unit")
-    if slot is None:
-        return fail.finish("systemrdl")
-    # the IP's slot: one registers block whose stride is the map's size (an array's size
-    # includes its stride: the only way SystemRDL sizes an addrmap past its children)
-    fail.equal(len(slot.children), 1, "specular_unit holds one registers block")
-    top, block = slot.children[0] if slot.children else (None, None)
+    fail.equal(sorted(rdl.addrmaps), ["specular_unit"], "root addrmaps (no wrapper)")
+    top = rdl.addrmaps.get("specular_unit")
     if top is None:
         return fail.finish("systemrdl")
-    fail.equal((top.kind, top.type_name), ("addrmap", "specular_unit_registers"), "the registers block's type")
-    fail.equal((block.name, block.dims, block.address), ("registers", (1,), 0), "one block at 0")
-    fail.equal(block.stride, cpp["map_size"], "the block's stride: the map's size, so the slot's")
     fail.equal(top.defaults.get("regwidth"), 32, "default regwidth")
+    desc = str(top.properties.get("desc", ""))
+    for word in ("done_irq", "LEVEL_HIGH", "ADDR_WIDTH", "BATCH_CAPACITY reads 0"):
+        fail.check(word in desc, f"the addrmap's desc does not say {word!r}")
     by_name = {r["name"]: r for r in cpp["registers"]}
-    children = top.children
-    fail.equal([i.name for _, i in children], [r["name"] for r in cpp["registers"]],
-               "registers, regfiles and arrays in order")
-    for (comp, inst), row in zip(children, cpp["registers"]):
-        name = row["name"]
-        fail.equal(inst.address, row["offset"], f"{name} address")
+    # the rows in order; OPERANDS and RESULTS as WINDOW_REG aliases of their registers;
+    # then MAP_END, a register not present at the map's last word: SystemRDL sizes an
+    # addrmap by its last child, so the top is the map's size with no wrapper
+    want = []
+    for row in cpp["registers"]:
         if "aliases" in row:
-            fail.equal(comp.kind, "regfile", f"{name}: an alias window is a regfile")
-            regs = comp.children
-            fail.equal([i.name for _, i in regs], row["aliases"], f"{name} registers")
-            for w, ((rc, ri), alias) in enumerate(zip(regs, row["aliases"])):
-                fail.equal(rc.kind, "reg", f"{name}.{alias} kind")
-                fail.equal(ri.address, 4 * w, f"{name}.{alias} address")
-                check_rdl_fields(fail, f"{name}.{alias}", rc, by_name[alias]["fields"],
-                                 row["reset_of_word"][w], rdl.enums)
-        elif row["words"] > 1:
+            want += [(f"{row['name']}_{a}", row, w) for w, a in enumerate(row["aliases"])]
+        else:
+            want.append((row["name"], row, None))
+    children = top.children
+    fail.equal([i.name for _, i in children], [n for n, _, _ in want] + ["MAP_END"],
+               "registers, aliases and windows in order")
+    instances = {i.name: (c, i) for c, i in children}
+    for (comp, inst), (name, row, word) in zip(children, want):
+        if word is not None:
+            alias = row["aliases"][word]
+            fail.equal(inst.address, row["offset"] + 4 * word, f"{name} address")
+            fail.equal(inst.alias_of, alias, f"{name}: an alias of")
+            primary = instances.get(alias, (None, None))[0]
+            fail.check(comp is primary, f"{name}: not of its primary's type")
+            fail.equal(comp.kind, "reg", f"{name} kind")
+            check_rdl_fields(fail, name, comp, by_name[alias]["fields"], row["reset_of_word"][word],
+                             rdl.enums)
+            continue
+        fail.equal(inst.address, row["offset"], f"{name} address")
+        fail.equal(inst.alias_of, None, f"{name}: an alias")
+        if row["words"] > 1:
             # a window is an external memory of 32-bit words, no reset per word (issue 46)
             fail.equal((comp.kind, comp.external), ("mem", True), f"{name}: an external mem")
             fail.equal(inst.dims, None, f"{name}: one mem, not an array")
             fail.equal(comp.properties.get("mementries"), row["words"], f"{name} mementries")
             fail.equal(comp.properties.get("memwidth"), 32, f"{name} memwidth")
             fail.equal(comp.properties.get("sw"), "r" if row["access"] == "read_only" else "rw", f"{name} sw")
+            fail.check("specular_ip_axi" in str(comp.properties.get("desc", "")),
+                       f"{name}: its desc does not say specular_ip_axi lacks it")
         else:
             fail.equal(comp.kind, "reg", f"{name}: a reg")
             fail.equal(inst.dims, None, f"{name} array")
             check_rdl_fields(fail, name, comp, row["fields"], row["reset_of_word"][0], rdl.enums)
+    comp, inst = instances.get("MAP_END", (None, None))
+    if comp is not None:
+        fail.equal((comp.kind, inst.address, comp.properties.get("ispresent")),
+                   ("reg", cpp["map_size"] - 4, False), "MAP_END: a reg not present at the last word")
+    capacity = instances.get("BATCH_CAPACITY", (None, None))[0]
+    fail.check(capacity is not None and "0 on specular_ip_axi" in str(capacity.properties.get("desc")),
+               "BATCH_CAPACITY: its desc does not say what specular_ip_axi reads")
     # the last register ends inside the map
     last = cpp["registers"][-1]
     fail.check(last["offset"] + 4 * last["words"] <= cpp["map_size"], "map size")
@@ -389,6 +490,7 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
         instantiations = {text_of(i, "name"): i
                           for i in model.findall(f"{Q}instantiations/{Q}componentInstantiation")}
         file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
+        parameters = component_parameters(root)
         modules = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{TOP_FOLDER[top]}/{top}.v; proc",
                              os.path.join(scratch, f"{top}.json"))
         ports = modules[top]["ports"]
@@ -406,11 +508,27 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
                        f"{top}.{name} direction")
             vector = wire.find(f"{Q}vectors/{Q}vector")
             width = 1 if vector is None else \
-                abs(sv_number(text_of(vector, "left")) - sv_number(text_of(vector, "right"))) + 1
+                abs(sv_expression(text_of(vector, "left"), parameters) -
+                    sv_expression(text_of(vector, "right"), parameters)) + 1
             fail.equal(width, len(yp["bits"]), f"{top}.{name} width")
             type_names = [t.text for t in wire.iter(Q + "typeName")]
             fail.equal(type_names, ["wire signed" if yp.get("signed") else "wire"], f"{top}.{name} type")
             fail.check(xp.find(Q + "isPresent") is None, f"{top}.{name}: isPresent (every port is its top's)")
+        # a component with parameters of its own (specular_ip_axi): its ports' widths
+        # evaluated at another value of each integer parameter that sizes a port, against
+        # Yosys elaborating the top with that value (chparam)
+        for pid, other in (("ADDR_WIDTH", 32),) if "ADDR_WIDTH" in parameters else ():
+            changed = yosys_json(yosys, rom_dir, f"read_verilog {rtl}/{TOP_FOLDER[top]}/{top}.v; "
+                                 f"chparam -set {pid} {other} {top}; proc",
+                                 os.path.join(scratch, f"{top}_{pid}_{other}.json"))[top]["ports"]
+            for name, yp in changed.items():
+                vector = xml_ports[name].find(f"{Q}wire/{Q}vectors/{Q}vector") if name in xml_ports else None
+                if vector is None:
+                    continue
+                values = dict(parameters, **{pid: other})
+                width = abs(sv_expression(text_of(vector, "left"), values) -
+                            sv_expression(text_of(vector, "right"), values)) + 1
+                fail.equal(width, len(yp["bits"]), f"{top}.{name} width at {pid}={other}")
         # the module parameters, in order, with their defaults
         inst = instantiations.get(view)
         fail.check(inst is not None, f"no componentInstantiation {view}")
@@ -423,7 +541,11 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
         fail.equal(sorted(n for n, _, _ in xml_params), sorted(defaults), f"{top} parameters")
         for name, value, element in xml_params:
             want, bits = yosys_parameter(defaults.get(name, ""))
-            got = value[1:-1] if isinstance(want, str) else sv_number(value)
+            # a module parameter that follows a component parameter (specular_ip_axi) names it
+            if isinstance(want, str):
+                got = value[1:-1] if value.startswith('"') else str(parameters.get(value, ""))[1:-1]
+            else:
+                got = sv_expression(value, parameters)
             fail.equal(got, want, f"{top} parameter {name}")
             vector = element.find(f"{Q}vectors/{Q}vector")
             if bits is not None and bits != 32:  # a sized parameter
@@ -461,6 +583,105 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
     return fail.finish("rtl-ports")
 
 
+# Parameter sets other than the defaults: every field of CONFIG changed (normalisation
+# energy / device-energy, saturation literal, constants minimax / minimax-half, other
+# widths), h and a other than the patent's (a negative), and ADDR_WIDTH at 16 and 32.
+RESET_CASES = (
+    {},
+    {"CONFIG_VALUE": 0x080D1051, "PIN19_H_VALUE": 0x66, "PIN20_A_VALUE": 0x3F0000, "ADDR_WIDTH": 16},
+    {"CONFIG_VALUE": 0x0A0C0E33, "PIN19_H_VALUE": 0x2AB, "PIN20_A_VALUE": 0xFFC00000, "ADDR_WIDTH": 32},
+)
+
+
+def check_resets(export, source, scratch, iverilog, vvp, rom_dir):
+    from lxml import etree
+    fail = Failures("the RTL's read-back")
+    root = etree.parse(os.path.join(source, "ip", "specular_ip_axi.xml")).getroot()
+    block = root.find(f"{Q}memoryMaps/{Q}memoryMap/{Q}addressBlock")
+    registers = {text_of(r, "name"): r for r in block.findall(Q + "register")}
+    rtl = os.path.join(source, "rtl")
+    sources = sorted(os.path.join(rtl, d, f) for d in ("device", "primitives", "ip")
+                     for f in os.listdir(os.path.join(rtl, d))
+                     if f.endswith(".v") and not f.endswith("_props.v"))
+    bench = os.path.join(HERE, "ip_reset_readback_tb.v")
+    for n, case in enumerate(RESET_CASES):
+        where = ", ".join(f"{k}={v:#x}" if k != "ADDR_WIDTH" else f"{k}={v}" for k, v in case.items()) \
+            or "defaults"
+        out = os.path.join(scratch, f"case{n}.vvp")
+        args = [iverilog, "-g2005", "-Wall", "-Wno-timescale", "-o", out, "-s", "ip_reset_readback_tb",
+                f'-Pip_reset_readback_tb.ROM5_IMAGE="{rom_dir}/rom5.hex"',
+                f'-Pip_reset_readback_tb.ROM38_IMAGE="{rom_dir}/rom38.hex"']
+        args += [f"-Pip_reset_readback_tb.{k}={v}" for k, v in case.items()]
+        built = subprocess.run(args + sources + [bench], capture_output=True, text=True)
+        if built.returncode != 0:
+            fail.check(False, f"{where}: iverilog failed: {built.stderr.strip()[:400]}")
+            continue
+        ran = subprocess.run([vvp, "-n", out], capture_output=True, text=True, cwd=scratch)
+        read = {m.group(1): (int(m.group(2), 16), int(m.group(3)))
+                for m in re.finditer(r"READ (\w+) 0x([0-9a-fA-F]+) resp (\d+)", ran.stdout)}
+        fail.equal(sorted(read), sorted(CONFIGURED), f"{where}: registers read")
+        parameters = component_parameters(root, case)
+        for name, (value, response) in read.items():
+            fail.equal(response, 0, f"{where}: {name} response")
+            xr = registers.get(name)
+            if xr is None:
+                fail.check(False, f"no register {name} in specular_ip_axi.xml")
+                continue
+            described, mask = 0, 0
+            for xf in xr.findall(Q + "field"):
+                shift = sv_number(text_of(xf, "bitOffset"))
+                width = sv_number(text_of(xf, "bitWidth"))
+                reset = sv_expression(xf.find(f"{Q}resets/{Q}reset/{Q}value").text, parameters)
+                fail.check(0 <= reset < 1 << width,
+                           f"{where}: {name}.{text_of(xf, 'name')} reset {reset:#x} wider than {width} bits")
+                described |= reset << shift
+                mask |= ((1 << width) - 1) << shift
+            fail.check(described == value & mask,
+                       f"{where}: {name} reset in the XML {described:#010x} (its fields' bits "
+                       f"{mask:#010x}), the RTL reads {value:#010x}")
+            print(f"resets: {where}: {name} XML {described:#010x} RTL {value:#010x}")
+    return fail.finish("resets")
+
+
+def check_resolved(export, source, scratch):
+    from lxml import etree
+    fail = Failures("specular_ip_axi.xml evaluated")
+    expressions = etree.parse(os.path.join(source, "ip", "specular_ip_axi.xml")).getroot()
+    for n, case in enumerate(RESET_CASES):
+        out = os.path.join(scratch, f"resolved{n}.xml")
+        args = [export, "--source-dir", source, "--ipxact-resolved", out]
+        if case:
+            args += ["--set", ",".join(f"{k}={v:#x}" for k, v in case.items())]
+        subprocess.run(args, check=True)
+        resolved = etree.parse(out).getroot()
+        parameters = component_parameters(expressions, case)
+        # the same elements in the same order: every place an expression may stand
+        places = {"reset": "resets/{0}reset/{0}value", "range": "range", "left": "vectors/{0}vector/{0}left"}
+        for label, place in places.items():
+            path = ".//" + Q + place.format(Q)
+            want = [sv_expression(e.text, parameters) for e in expressions.iterfind(path)]
+            got = []
+            for e in resolved.iterfind(path):
+                try:
+                    got.append(sv_number(e.text))
+                except ValueError:
+                    got.append(f"not a number: {e.text!r}")
+            fail.equal(got, want, f"case {n}: every {label}")
+        values = {text_of(p, "name"): text_of(p, "value")
+                  for p in resolved.iterfind(f".//{Q}moduleParameter")}
+        for name, v in case.items():
+            fail.equal(sv_number(values.get(name, "0")), v, f"case {n}: moduleParameter {name}")
+    # bad values: refused, the range named
+    for setting, words in (("ADDR_WIDTH=14", "15..32"), ("ADDR_WIDTH=33", "15..32"),
+                           ("CONFIG_VALUE=0x100000000", "0..4294967295"), ("NO_SUCH=1", "NO_SUCH")):
+        run = subprocess.run([export, "--source-dir", source, "--ipxact-resolved",
+                              os.path.join(scratch, "bad.xml"), "--set", setting],
+                             capture_output=True, text=True)
+        fail.check(run.returncode == 2 and words in run.stderr,
+                   f"--set {setting}: exit {run.returncode}, {run.stderr.strip()!r}; expected 2 naming {words}")
+    return fail.finish("resolved")
+
+
 def check_current(export, source, scratch):
     fail = Failures()
     fresh = {"specular_unit.xml": "--ipxact", "specular_unit.rdl": "--systemrdl"}
@@ -482,7 +703,8 @@ def check_current(export, source, scratch):
 
 def main(argv):
     commands = {"ipxact": (check_ipxact, 3), "systemrdl": (check_systemrdl, 3),
-                "rtl-ports": (check_rtl_ports, 5), "current": (check_current, 3)}
+                "rtl-ports": (check_rtl_ports, 5), "current": (check_current, 3),
+                "resets": (check_resets, 6), "resolved": (check_resolved, 3)}
     if len(argv) < 2 or argv[1] not in commands or len(argv) - 2 != commands[argv[1]][1]:
         print(__doc__, file=sys.stderr)
         return 2

@@ -5,8 +5,11 @@ the test reads the file with this: a tokeniser and a recursive-descent parser ov
   root      := (enum_def | component_def)*
   enum_def  := 'enum' ID '{' (ID '=' number ['{' assignment* '}'] ';')* '}' ';'
   component := ['external'] ('addrmap'|'regfile'|'reg'|'field'|'mem') [ID] '{' item* '}' [instances] ';'
-  item      := component | type_instance | assignment
-  type_instance := ID instance ';'     (ID: a root addrmap defined above)
+  item      := component | type_instance | alias | assignment
+  type_instance := ID instance ';'     (ID: a root addrmap, or a component defined by name
+                                        earlier in this component's body)
+  alias     := 'alias' ID ID instance ';'   (primary: an earlier sibling instance; type:
+                                        as type_instance)
   assignment:= ['default'] ID ['=' value] ';'
   instances := instance (',' instance)*
   instance  := ID ['[' number [':' number] ']'] ['=' number] ['@' number] ['+=' number]
@@ -120,6 +123,7 @@ class Instance:
     reset: Optional[int] = None
     address: Optional[int] = None
     stride: Optional[int] = None
+    alias_of: Optional[str] = None  # `alias PRIMARY TYPE NAME`: the primary's instance name
 
 
 @dataclass
@@ -149,6 +153,7 @@ class Parser:
     def __init__(self, tokens: List[Token]):
         self.tokens, self.pos = tokens, 0
         self.defined: Dict[str, Component] = {}  # root addrmaps, instantiable by name
+        self.scopes: List[Dict[str, Component]] = []  # named definitions in open bodies
 
     def peek(self) -> Token:
         return self.tokens[self.pos]
@@ -250,15 +255,28 @@ class Parser:
         type_name = self.identifier() if self.peek().kind == "id" else None
         comp = Component(kind, type_name, line=t.line, external=external)
         self.expect("{")
+        self.scopes.append({})
         while not self.accept("}"):
             if self.peek().kind == "id" and self.peek().text in KEYWORD_COMPONENTS + ("external",):
                 child, instances = self.component()
+                if not instances and not child.type_name:
+                    raise RdlError(f"line {child.line}: a nested {child.kind} without a name or an instance")
                 if not instances:
-                    raise RdlError(f"line {child.line}: a nested {child.kind} without an instance")
+                    self.scopes[-1][child.type_name] = child  # a definition, instantiated below
                 for inst in instances:
                     comp.children.append((child, inst))
-            elif self.peek().kind == "id" and self.peek().text in self.defined:
-                child = self.defined[self.identifier()]  # an instance of a defined addrmap
+            elif self.accept("alias"):
+                line = self.peek().line
+                primary = self.identifier()
+                if primary not in [i.name for _, i in comp.children]:
+                    raise RdlError(f"line {line}: alias of '{primary}', which is no earlier sibling")
+                child = self.defined_type()
+                inst = self.instance()
+                inst.alias_of = primary
+                comp.children.append((child, inst))
+                self.expect(";")
+            elif self.peek().kind == "id" and self.lookup(self.peek().text) is not None:
+                child = self.defined_type()  # an instance of a defined component
                 comp.children.append((child, self.instance()))
                 self.expect(";")
             else:
@@ -267,6 +285,7 @@ class Parser:
                 if key in target:
                     raise RdlError(f"line {self.peek().line}: property '{key}' assigned twice")
                 target[key] = val
+        self.scopes.pop()
         instances = []
         if self.peek().kind == "id":
             instances.append(self.instance())
@@ -274,6 +293,20 @@ class Parser:
                 instances.append(self.instance())
         self.expect(";")
         return comp, instances
+
+    def lookup(self, name: str) -> Optional[Component]:
+        for scope in reversed(self.scopes):
+            if name in scope:
+                return scope[name]
+        return self.defined.get(name)
+
+    def defined_type(self) -> Component:
+        line = self.peek().line
+        name = self.identifier()
+        comp = self.lookup(name)
+        if comp is None:
+            raise RdlError(f"line {line}: no component '{name}' defined before")
+        return comp
 
     def instance(self) -> Instance:
         inst = Instance(self.identifier())

@@ -136,7 +136,11 @@ void print_register(std::ostream& out, const RegisterInfo& row) {
                 std::string("Access kind of ") + row.name)
       << define(name + "_RESET", hex(row.reset, 8),
                 std::string(row.name) + " after reset" +
-                    (row.reg == Reg::config ? ": the default configuration's word" : ""));
+                    (row.reg == Reg::config ? ": the default configuration's word" : "") +
+                    (row.reg == Reg::batch_capacity ? " on the TLM-2.0 targets; specular_ip_axi reads 0"
+                     : row.reg == Reg::config || row.reg == Reg::pin19_h || row.reg == Reg::pin20_a
+                         ? std::string(" (specular_ip_axi: its parameter ") + row.name + "_VALUE)"
+                         : ""));
   if (row.words > 1)
     out << define(name + "_WORDS", dec(row.words), std::string("32-bit words in ") + row.name)
         << define(name + "_SIZE", hex(4 * row.words, 4), std::string("Bytes in ") + row.name);
@@ -190,7 +194,9 @@ std::string text() {
       << define(std::string(prefix) + "REGISTER_COUNT", dec(static_cast<std::uint32_t>(register_count)),
                 "rows of the map (registers and windows)")
       << define(std::string(prefix) + "BATCH_CAPACITY", dec(batch_capacity),
-                "operations per batch: BATCH_COS words (BATCH_CAPACITY reads it too)")
+                "operations per batch on the TLM-2.0 targets (their BATCH_CAPACITY, BATCH_COS's "
+                "words: the most an IP of this map holds); not every IP's: specular_ip_axi reads 0 "
+                "(no windows), so a driver reads BATCH_CAPACITY")
       << group_close << "\n"
       << group_open("Operand ranges", "Larger values are refused (STATUS.ERROR), never clamped.")
       << define(std::string(prefix) + "N_MIN", dec(n_min), "smallest specular exponent n")

@@ -100,7 +100,20 @@ const char* register_access(Reg reg) {
 
 /// `with_reset` false: a memory window's word (BATCH_COS, BATCH_OUT), which no reset
 /// touches: a register model then holds no per-word reset check for its 4 096 words.
-void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset, bool with_reset = true) {
+/// `parameter` not empty: the register reads that component parameter (specular_ip_axi's
+/// CONFIG_VALUE, PIN19_H_VALUE, PIN20_A_VALUE), so the field's reset is an IP-XACT 2014
+/// expression of it (SystemVerilog operators on the parameter's id), not a number that
+/// goes stale when an integrator sets the parameter.
+std::string reset_expression(const FieldInfo& f, const std::string& parameter) {
+  if (f.shift == 0 && f.width == 32) return parameter;
+  const std::string shifted = f.shift == 0 ? parameter : "(" + parameter + " >> " + std::to_string(f.shift) + ")";
+  char mask[16];
+  std::snprintf(mask, sizeof mask, "'h%X", static_cast<unsigned>((std::uint64_t{1} << f.width) - 1));
+  return shifted + " & " + mask;
+}
+
+void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset, bool with_reset = true,
+                 const std::string& parameter = "") {
   x.open("field");
   x.leaf("name", f.name);
   x.leaf("description", f.description);
@@ -108,7 +121,8 @@ void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset, bool 
   if (with_reset) {
     x.open("resets");
     x.open("reset");
-    x.leaf("value", hex_literal((register_reset & f.mask()) >> f.shift));
+    x.leaf("value", parameter.empty() ? hex_literal((register_reset & f.mask()) >> f.shift)
+                                      : reset_expression(f, parameter));
     x.close("reset");
     x.close("resets");
   }
@@ -134,7 +148,7 @@ void write_field(Xml& x, const FieldInfo& f, std::uint32_t register_reset, bool 
 
 /// A single register `reg` at `offset` (its own, or its word in an alias window).
 void write_register(Xml& x, Reg reg, std::uint32_t offset, std::uint32_t reset,
-                    const std::string& description) {
+                    const std::string& description, const std::string& parameter = "") {
   const RegisterInfo& row = info(reg);
   x.open("register");
   x.leaf("name", row.name);
@@ -142,7 +156,7 @@ void write_register(Xml& x, Reg reg, std::uint32_t offset, std::uint32_t reset,
   x.leaf("addressOffset", hex_literal(offset));
   x.leaf("size", "32");
   x.leaf("access", register_access(reg));
-  for (const FieldInfo& f : fields_of(reg)) write_field(x, f, reset);
+  for (const FieldInfo& f : fields_of(reg)) write_field(x, f, reset, true, parameter);
   x.close("register");
 }
 
@@ -150,9 +164,25 @@ bool is_alias_window(const RegisterInfo& row) {
   return row.reg == Reg::operands || row.reg == Reg::results;
 }
 
+/// The parameter of specular_ip_axi a register reads (specular_reg_block.v), or "".
+std::string configuring_parameter(Reg reg) {
+  switch (reg) {
+    case Reg::config: return "CONFIG_VALUE";
+    case Reg::pin19_h: return "PIN19_H_VALUE";
+    case Reg::pin20_a: return "PIN20_A_VALUE";
+    default: return "";
+  }
+}
+
 /// `windows` false: the map of specular_ip_axi, which has no batch windows (holes there,
 /// BATCH_CAPACITY 0: docs/decisions.md).
-void write_memory_map(Xml& x, bool windows) {
+void write_memory_map(Xml& x, bool windows, const ComponentFacts& facts) {
+  // resolved: the values the top was read with, in place of expressions of them
+  const auto value_of = [&facts](const std::string& name) {
+    for (const VerilogParameter& p : facts.tops.front().parameters)
+      if (p.name == name) return p.value;
+    throw std::invalid_argument("write_memory_map: no parameter " + name);
+  };
   x.open("memoryMaps");
   x.open("memoryMap");
   x.leaf("name", "registers");
@@ -162,16 +192,48 @@ void write_memory_map(Xml& x, bool windows) {
   x.open("addressBlock");
   x.leaf("name", "specular");
   x.leaf("description",
-         "Every register and window; bytes outside them are holes (TLM_ADDRESS_ERROR_RESPONSE)");
+         windows ? "Every register and window; bytes outside them are holes (TLM_ADDRESS_ERROR_RESPONSE)"
+                 : "Every register; the IP decodes the low ADDR_WIDTH bits of the address (2 ** "
+                   "ADDR_WIDTH bytes, 0x8000 at the default 15): bytes no register covers, up to "
+                   "there, answer DECERR");
   x.leaf("baseAddress", hex_literal(0));
-  x.leaf("range", hex_literal(map_size));
+  // specular_ip_axi answers (DECERR above the registers) in the whole window its address
+  // width decodes: an expression of the component parameter ADDR_WIDTH
+  if (windows) {
+    x.leaf("range", hex_literal(map_size));
+  } else if (facts.resolved) {
+    char range[24];
+    std::snprintf(range, sizeof range, "'h%llX",
+                  static_cast<unsigned long long>(std::uint64_t{1} << value_of("ADDR_WIDTH")));
+    x.leaf("range", range);
+  } else {
+    x.leaf("range", "2 ** ADDR_WIDTH");
+  }
   x.leaf("width", "32");
   x.leaf("usage", "register");
   for (const RegisterInfo& row : register_map) {
     const bool batch_window = row.reg == Reg::batch_cos || row.reg == Reg::batch_out;
     if (batch_window && !windows) continue;
     if (row.reg == Reg::batch_capacity && !windows) {
-      write_register(x, row.reg, row.offset, 0, row.description + std::string(" (0 on this IP)"));
+      write_register(x, row.reg, row.offset, 0,
+                     row.description + std::string(" (0 on this IP: no batch windows, their "
+                                                   "offsets answer DECERR; the TLM-2.0 targets "
+                                                   "read ") + std::to_string(batch_capacity) + ")");
+    } else if (row.words == 1 && !windows && !configuring_parameter(row.reg).empty()) {
+      const std::string parameter = configuring_parameter(row.reg);
+      if (facts.resolved)
+        write_register(x, row.reg, row.offset, static_cast<std::uint32_t>(value_of(parameter)),
+                       row.description + std::string(" (on this IP: parameter ") + parameter +
+                           ", resolved to " + hex_literal(static_cast<std::uint32_t>(value_of(parameter))) + ")");
+      else
+        write_register(x, row.reg, row.offset, row.reset,
+                       row.description + std::string(" (on this IP: parameter ") + parameter + ")",
+                       parameter);
+    } else if (row.reg == Reg::batch_capacity) {
+      write_register(x, row.reg, row.offset, row.reset,
+                     row.description + std::string(" (") + std::to_string(batch_capacity) +
+                         " on the TLM-2.0 targets, their default, with the windows below; "
+                         "specular_ip_axi reads 0: specular_ip_axi.xml)");
     } else if (row.words == 1) {
       write_register(x, row.reg, row.offset, row.reset, row.description);
     } else if (is_alias_window(row)) {
@@ -258,6 +320,43 @@ void write_views(Xml& x, const ComponentFacts& facts) {
   x.close("views");
 }
 
+std::string parameter_value(const VerilogParameter& p) {
+  return p.is_string ? "\"" + p.text + "\"" : std::to_string(p.value);
+}
+
+/// The allowed range of a parameter the Verilog refuses outside it (specular_ip_axi.v's
+/// ADDR_WIDTH_OUT_OF_RANGE), as IP-XACT's minimum and maximum.
+std::string parameter_bounds(const VerilogModule& top, const VerilogParameter& p) {
+  std::int64_t minimum = 0, maximum = 0;
+  if (!parameter_range(top.name, p.name, minimum, maximum)) return "";
+  return " minimum=\"" + std::to_string(minimum) + "\" maximum=\"" + std::to_string(maximum) + "\"";
+}
+
+/// specular_ip_axi's parameters as the component's, ids their names, so that expressions
+/// (the ports' widths, the resets of CONFIG, PIN19_H and PIN20_A, the address block's
+/// range) name them and an integrator sets each in one place.
+void write_component_parameters(Xml& x, const ComponentFacts& facts) {
+  const VerilogModule& top = facts.tops.front();
+  if (top.name != "specular_ip_axi") return;
+  x.open("parameters");
+  for (const VerilogParameter& p : top.parameters) {
+    x.open("parameter", "parameterId=\"" + p.name + "\"" + parameter_bounds(top, p) +
+                            " resolve=\"user\" type=\"" + (p.is_string ? "string" : "longint") + "\"");
+    x.leaf("name", p.name);
+    if (p.width > 0) {
+      x.open("vectors");
+      x.open("vector");
+      x.leaf("left", std::to_string(p.width - 1));
+      x.leaf("right", "0");
+      x.close("vector");
+      x.close("vectors");
+    }
+    x.leaf("value", parameter_value(p));
+    x.close("parameter");
+  }
+  x.close("parameters");
+}
+
 void write_instantiations(Xml& x, const ComponentFacts& facts) {
   x.open("instantiations");
   for (const SystemCView& v : systemc_views) {
@@ -281,9 +380,12 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
     x.leaf("language", "verilog");
     x.leaf("moduleName", top.name);
     x.open("moduleParameters");
+    // specular_ip_axi's module parameters follow the component's parameters of the same
+    // name (write_component_parameters), which its memory map and ports refer to too
+    const bool follows = top.name == "specular_ip_axi" && !facts.resolved;
     for (const VerilogParameter& p : top.parameters) {
-      x.open("moduleParameter", "parameterId=\"" + prefix_of_top(top) + "_" + p.name +
-                                    "\" resolve=\"user\" type=\"" +
+      x.open("moduleParameter", "parameterId=\"" + prefix_of_top(top) + "_" + p.name + "\"" +
+                                    (follows ? "" : " resolve=\"user\"") + " type=\"" +
                                     (p.is_string ? "string" : "longint") + "\"");
       x.leaf("name", p.name);
       if (p.width > 0) {
@@ -294,7 +396,7 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
         x.close("vector");
         x.close("vectors");
       }
-      x.leaf("value", p.is_string ? "\"" + p.text + "\"" : std::to_string(p.value));
+      x.leaf("value", follows ? p.name : parameter_value(p));
       x.close("moduleParameter");
     }
     x.close("moduleParameters");
@@ -309,7 +411,10 @@ void write_instantiations(Xml& x, const ComponentFacts& facts) {
   x.close("instantiations");
 }
 
-void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string>& views) {
+/// `expressions`: the component has its top's parameters (specular_ip_axi), so a width
+/// that follows one is an expression of it; elsewhere the width at the defaults.
+void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string>& views,
+                     bool expressions) {
   x.open("port");
   x.leaf("name", p.name);
   x.open("wire");
@@ -317,7 +422,8 @@ void write_wire_port(Xml& x, const VerilogPort& p, const std::vector<std::string
   if (p.is_vector) {
     x.open("vectors");
     x.open("vector");
-    x.leaf("left", std::to_string(p.msb));
+    x.leaf("left", expressions && !p.msb_expression.empty() ? p.msb_expression  // ADDR_WIDTH - 1
+                                                             : std::to_string(p.msb));
     x.leaf("right", std::to_string(p.lsb));
     x.close("vector");
     x.close("vectors");
@@ -367,7 +473,8 @@ void write_ports(Xml& x, const ComponentFacts& facts) {
   }
   // The Verilog top's ports, every one present (one top per component).
   const VerilogModule& top = facts.tops.front();
-  for (const VerilogPort& p : top.ports) write_wire_port(x, p, {view_of_top(top)});
+  for (const VerilogPort& p : top.ports)
+    write_wire_port(x, p, {view_of_top(top)}, top.name == "specular_ip_axi" && !facts.resolved);
   x.close("ports");
 }
 
@@ -456,7 +563,10 @@ void write_axi_interface(Xml& x, const ComponentFacts& facts) {
   x.leaf("name", "s_axi");
   x.leaf("description",
          "AMBA AXI4-Lite slave of specular_ip_axi: 32-bit data, byte strobes, the register "
-         "map 'registers' without the batch windows (docs/rtl_ip.md)");
+         "map 'registers' without the batch windows (docs/rtl_ip.md). AWADDR and ARADDR are "
+         "ADDR_WIDTH bits (parameter, 15 to 32, default 15): the offset in the IP's window of "
+         "2 ** ADDR_WIDTH bytes; connect the low bits of the interconnect's address, which "
+         "selects the IP by the bits above (any base aligned to 2 ** ADDR_WIDTH)");
   x.empty("busType", "vendor=\"amba.com\" library=\"AMBA4\" name=\"AXI4-Lite\" version=\"r0p0_0\"");
   x.open("abstractionTypes");
   x.open("abstractionType");
@@ -493,7 +603,56 @@ void write_axi_interface(Xml& x, const ComponentFacts& facts) {
   x.close("busInterface");
 }
 
+/// done_irq as an interrupt interface: Xilinx's interrupt bus type (the one IP-XACT
+/// interrupt definition integration tools ship; IEEE and Accellera define none), the
+/// component its master (it drives the line), SENSITIVITY LEVEL_HIGH: high while
+/// STATUS.DONE is set. docs/ipxact.md says why this VLNV.
+void write_interrupt_interface(Xml& x, const std::vector<std::string>& views) {
+  x.open("busInterface");
+  x.leaf("name", "done_irq");
+  x.leaf("description",
+         "Interrupt: level, active high, high while STATUS.DONE is set; cleared by writing 1 "
+         "to STATUS.DONE (docs/tlm.md)");
+  x.empty("busType", "vendor=\"xilinx.com\" library=\"signal\" name=\"interrupt\" version=\"1.0\"");
+  x.open("abstractionTypes");
+  x.open("abstractionType");
+  for (const std::string& v : views) x.leaf("viewRef", v);
+  x.empty("abstractionRef",
+          "vendor=\"xilinx.com\" library=\"signal\" name=\"interrupt_rtl\" version=\"1.0\"");
+  x.open("portMaps");
+  x.open("portMap");
+  x.open("logicalPort");
+  x.leaf("name", "INTERRUPT");
+  x.close("logicalPort");
+  x.open("physicalPort");
+  x.leaf("name", "done_irq");
+  x.close("physicalPort");
+  x.close("portMap");
+  x.close("portMaps");
+  x.close("abstractionType");
+  x.close("abstractionTypes");
+  x.line("<ipxact:master/>");
+  x.open("parameters");
+  x.open("parameter", "parameterId=\"done_irq_SENSITIVITY\" type=\"string\"");
+  x.leaf("name", "SENSITIVITY");
+  x.leaf("value", "\"LEVEL_HIGH\"");
+  x.close("parameter");
+  x.close("parameters");
+  x.close("busInterface");
+}
+
 }  // namespace
+
+bool parameter_range(const std::string& top, const std::string& name, std::int64_t& minimum,
+                     std::int64_t& maximum) {
+  // specular_ip_axi.v's generate block ADDR_WIDTH_OUT_OF_RANGE
+  if (top == "specular_ip_axi" && name == "ADDR_WIDTH") {
+    minimum = 15;
+    maximum = 32;
+    return true;
+  }
+  return false;
+}
 
 std::string ipxact_component(const ComponentFacts& facts) {
   if (facts.tops.size() != 1 || facts.top_files.size() != 1)
@@ -544,8 +703,15 @@ std::string ipxact_component(const ComponentFacts& facts) {
   x.close("busInterface");
   }
   write_axi_interface(x, facts);
+  if (facts.systemc) {
+    std::vector<std::string> views;
+    for (const SystemCView& v : systemc_views) views.push_back(v.view);
+    write_interrupt_interface(x, views);
+  } else if (axi) {
+    write_interrupt_interface(x, {view_of_top(facts.tops.front())});
+  }
   if (facts.systemc || axi) x.close("busInterfaces");
-  if (facts.systemc || axi) write_memory_map(x, !axi);
+  if (facts.systemc || axi) write_memory_map(x, !axi, facts);
   x.open("model");
   write_views(x, facts);
   write_instantiations(x, facts);
@@ -553,6 +719,7 @@ std::string ipxact_component(const ComponentFacts& facts) {
   x.close("model");
   write_file_sets(x, facts);
   x.leaf("description", facts.description);
+  write_component_parameters(x, facts);
   x.close("component");
   return x.str();
 }

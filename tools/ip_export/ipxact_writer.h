@@ -23,7 +23,17 @@ struct ComponentFacts {
   std::string libdir = "lib";             ///< CMAKE_INSTALL_LIBDIR, relative to the prefix
   std::vector<VerilogModule> tops;        ///< its one Verilog top
   std::vector<std::vector<std::string>> top_files;  ///< the top's Verilog files (names only)
+  /// specular_ip_axi only: numbers where the component has expressions of its parameters
+  /// (resets, the address block's range, AWADDR/ARADDR's width, the module parameters), at
+  /// the values its top was read with (read_module_header's overrides): for tools that
+  /// evaluate no IP-XACT expression (PeakRDL-ipxact's importer).
+  bool resolved = false;
 };
+
+/// The values a parameter of a Verilog top may take where the Verilog refuses others
+/// (specular_ip_axi's ADDR_WIDTH: 15 to 32); false when it has no such rule.
+bool parameter_range(const std::string& top, const std::string& name, std::int64_t& minimum,
+                     std::int64_t& maximum);
 
 /// Throws std::invalid_argument unless `facts` has exactly one Verilog top.
 std::string ipxact_component(const ComponentFacts& facts);

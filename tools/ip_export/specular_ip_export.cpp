@@ -12,6 +12,12 @@
 //   --verilog FILE    the register block in Verilog (rtl/ip/specular_reg_block.v)
 //   --bus-dir DIR     the bus and abstraction definitions of the socket's bus type
 //                     (ip/tlm2_generic_payload.busdef.xml, .absdef.xml)
+//   --ipxact-resolved FILE  specular_ip_axi's component with numbers where
+//                     specular_ip_axi.xml has expressions of its parameters, at their
+//                     defaults or at --set's values: for tools that evaluate no IP-XACT
+//                     expression (PeakRDL-ipxact's importer; docs/ipxact.md)
+//   --set N=V[,N=V]   specular_ip_axi's integer parameters for --ipxact-resolved
+//                     (CONFIG_VALUE=0x080D1051,ADDR_WIDTH=16)
 //   --source-dir DIR  the source tree: rtl/device/ holds the Verilog tops
 //   --version V       the component's version (default: the package's)
 //   --libdir D        the install's library folder, relative to the prefix (default lib)
@@ -39,7 +45,33 @@ namespace {
 const char* usage =
     "usage: specular_ip_export --source-dir DIR [--version V] [--libdir D]\n"
     "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE] [--bus-dir DIR]\n"
-    "                          [--verilog FILE]\n";
+    "                          [--verilog FILE] [--ipxact-resolved FILE [--set N=V[,N=V]]]\n";
+
+/// --set's list: NAME=VALUE pairs, VALUE decimal or 0x hex. Throws std::invalid_argument
+/// naming the bad pair.
+std::map<std::string, std::int64_t> parse_settings(const std::string& text) {
+  std::map<std::string, std::int64_t> settings;
+  std::string::size_type start = 0;
+  while (start <= text.size()) {
+    const std::string::size_type comma = text.find(',', start);
+    const std::string pair = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    const std::string::size_type eq = pair.find('=');
+    std::size_t used = 0;
+    long long value = 0;
+    try {
+      if (eq == std::string::npos || eq == 0) throw std::invalid_argument(pair);
+      value = std::stoll(pair.substr(eq + 1), &used, 0);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != pair.size() - eq - 1)
+      throw std::invalid_argument("--set: '" + pair + "' is not NAME=VALUE (VALUE decimal or 0x hex)");
+    settings[pair.substr(0, eq)] = value;
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return settings;
+}
 
 bool write(const std::string& path, const std::string& text) {
   if (path == "-") {
@@ -56,6 +88,10 @@ bool write(const std::string& path, const std::string& text) {
   return true;
 }
 
+const char* const axi_description =
+    "The whole IP in Verilog: an AMBA AXI4-Lite slave with the generated register block "
+    "and the synchronous device, done_irq (docs/rtl_ip.md)";
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,7 +100,7 @@ int main(int argc, char** argv) {
                                              {"--libdir", "lib"}};
   const std::vector<std::string> known{"--source-dir", "--version", "--libdir",
                                        "--ipxact",     "--systemrdl", "--json", "--bus-dir",
-                                       "--verilog"};
+                                       "--verilog",    "--ipxact-resolved", "--set"};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help") {
@@ -77,17 +113,25 @@ int main(int argc, char** argv) {
       std::cerr << "specular_ip_export: error: "
                 << (is_known ? "'" + arg + "' needs a value" : "unknown option '" + arg + "'")
                 << "; the options are --source-dir, --version, --libdir, --ipxact, --systemrdl, --json, "
-                   "--bus-dir, --verilog\n"
+                   "--bus-dir, --verilog, --ipxact-resolved, --set\n"
                 << usage;
       return 2;
     }
     options[arg] = argv[++i];
   }
   if (!options.count("--ipxact") && !options.count("--systemrdl") && !options.count("--json") &&
-      !options.count("--bus-dir") && !options.count("--verilog")) {
-    std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl, --json "
-                 "--bus-dir or --verilog\n"
+      !options.count("--bus-dir") && !options.count("--verilog") && !options.count("--ipxact-resolved")) {
+    std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl, --json, "
+                 "--bus-dir, --verilog or --ipxact-resolved\n"
               << usage;
+    return 2;
+  }
+  if (options.count("--set") && !options.count("--ipxact-resolved")) {
+    std::cerr << "specular_ip_export: error: --set applies to --ipxact-resolved only\n";
+    return 2;
+  }
+  if ((options.count("--ipxact") || options.count("--ipxact-resolved")) && !options.count("--source-dir")) {
+    std::cerr << "specular_ip_export: error: --ipxact and --ipxact-resolved need --source-dir (the Verilog tops)\n";
     return 2;
   }
   bool ok = true;
@@ -101,10 +145,6 @@ int main(int argc, char** argv) {
   if (options.count("--systemrdl"))
     ok = write(options["--systemrdl"], systemrdl_addrmap(options["--version"])) && ok;
   if (options.count("--ipxact")) {
-    if (!options.count("--source-dir")) {
-      std::cerr << "specular_ip_export: error: --ipxact needs --source-dir (the Verilog tops)\n";
-      return 2;
-    }
     struct Component {
       const char* top;  // relative to rtl/
       const char* name;
@@ -118,9 +158,7 @@ int main(int argc, char** argv) {
         {"device/specular_device_sync", "specular_device_sync",
          "The synchronous variant of the device of UA 59965 U (one clock, enables; docs/rtl.md): "
          "its Verilog top with pins 17-35", false},
-        {"ip/specular_ip_axi", "specular_ip_axi",
-         "The whole IP in Verilog: an AMBA AXI4-Lite slave with the generated register block "
-         "and the synchronous device, done_irq (docs/rtl_ip.md)", false},
+        {"ip/specular_ip_axi", "specular_ip_axi", axi_description, false},
     };
     const std::string main_file = options["--ipxact"];
     const std::string::size_type slash = main_file.find_last_of('/');
@@ -151,6 +189,49 @@ int main(int argc, char** argv) {
         ok = write(file, ipxact_component(facts)) && ok;
       }
     } catch (const VerilogError& e) {
+      std::cerr << "specular_ip_export: error: " << e.what() << "\n";
+      return 2;
+    }
+  }
+  if (options.count("--ipxact-resolved")) {
+    const std::string rtl = options["--source-dir"] + "/rtl";
+    try {
+      const std::map<std::string, std::int64_t> settings =
+          options.count("--set") ? parse_settings(options["--set"]) : std::map<std::string, std::int64_t>{};
+      VerilogModule m = read_module_header(rtl + "/ip/specular_ip_axi.v", settings);
+      for (const VerilogParameter& p : m.parameters) {
+        std::int64_t minimum = 0, maximum = 0;
+        if (p.is_string) continue;
+        if (!parameter_range(m.name, p.name, minimum, maximum)) {
+          if (p.width <= 0) continue;
+          maximum = (std::int64_t{1} << p.width) - 1;  // a sized parameter: [W-1:0]
+        }
+        if (p.value < minimum || p.value > maximum)
+          throw std::invalid_argument("--set: " + p.name + " = " + std::to_string(p.value) +
+                                      " is outside " + std::to_string(minimum) + ".." +
+                                      std::to_string(maximum));
+      }
+      m.file = "rtl/ip/specular_ip_axi.v";
+      const auto modules = read_modules({rtl + "/device", rtl + "/primitives", rtl + "/design_space",
+                                         rtl + "/ip"});
+      ComponentFacts facts;
+      facts.name = "specular_ip_axi";
+      facts.description = std::string(axi_description) +
+                          "; resolved: numbers at the parameters' values below, for tools that "
+                          "evaluate no expression (specular_ip_axi.xml has the expressions)";
+      facts.systemc = false;
+      facts.version = options["--version"];
+      facts.libdir = options["--libdir"];
+      facts.resolved = true;
+      facts.tops.push_back(m);
+      std::vector<std::string> names;
+      for (const std::string& path : file_closure(modules, m.name)) names.push_back(path.substr(rtl.size() + 1));
+      facts.top_files.push_back(names);
+      ok = write(options["--ipxact-resolved"], ipxact_component(facts)) && ok;
+    } catch (const VerilogError& e) {
+      std::cerr << "specular_ip_export: error: " << e.what() << "\n";
+      return 2;
+    } catch (const std::invalid_argument& e) {
       std::cerr << "specular_ip_export: error: " << e.what() << "\n";
       return 2;
     }

@@ -57,22 +57,45 @@ std::string access_properties(Access access) {
   return "";
 }
 
-void write_reg(std::ostringstream& s, const std::string& indent, Reg reg, std::uint32_t reset,
-               const std::string& description, const std::string& instance) {
-  s << indent << "reg {\n";
-  s << indent << "  name = " << quoted(info(reg).name) << ";\n";
-  s << indent << "  desc = " << quoted(description) << ";\n";
+/// The reg body's lines (name, desc, fields) at `indent`.
+void write_reg_body(std::ostringstream& s, const std::string& indent, Reg reg, std::uint32_t reset,
+                    const std::string& description) {
+  s << indent << "name = " << quoted(info(reg).name) << ";\n";
+  s << indent << "desc = " << quoted(description) << ";\n";
   const RowRole role = role_of(reg);
   const bool constant = role == RowRole::constant || role == RowRole::configured;
   for (const FieldInfo& f : fields_of(reg)) {
     // a constant is no hardware input: hw = na (SystemRDL 2.0, 9.4)
-    s << indent << "  field { desc = " << quoted(f.description) << "; "
+    s << indent << "field { desc = " << quoted(f.description) << "; "
       << (constant ? std::string("sw = r; hw = na;") : access_properties(f.access));
     if (f.values != FieldValues::none) s << " encode = " << enum_type(f.values) << ";";
     s << " } " << f.name << "[" << (f.shift + f.width - 1) << ":" << f.shift << "] = "
       << sized(f.width, (reset & f.mask()) >> f.shift) << ";\n";
   }
-  s << indent << "} " << instance << ";\n";
+}
+
+/// Whether a word of OPERANDS or RESULTS is `reg`: then `reg` is a named type, so that
+/// the window's words can be its aliases (an alias names its primary's type).
+bool is_aliased(Reg reg) {
+  for (std::uint32_t w = 0; w < info(Reg::operands).words; ++w)
+    if (operand_register(w) == reg) return true;
+  for (std::uint32_t w = 0; w < info(Reg::results).words; ++w)
+    if (result_register(w) == reg) return true;
+  return false;
+}
+
+std::string type_of(Reg reg) { return std::string(info(reg).name) + "_reg"; }
+
+/// What each IP reads in BATCH_CAPACITY (the windows are there or not).
+std::string description_of(const RegisterInfo& row) {
+  if (row.reg == Reg::batch_capacity)
+    return std::string(row.description) + ": " + std::to_string(batch_capacity) +
+           " on the TLM-2.0 targets (their default; BATCH_COS and BATCH_OUT are there), 0 on "
+           "specular_ip_axi (no windows: their offsets answer DECERR); a driver reads it";
+  if (row.reg == Reg::config || row.reg == Reg::pin19_h || row.reg == Reg::pin20_a)
+    return std::string(row.description) +
+           "; on specular_ip_axi the parameter " + row.name + "_VALUE (its IP-XACT reset follows it)";
+  return row.description;
 }
 
 }  // namespace
@@ -92,35 +115,51 @@ std::string systemrdl_addrmap(const std::string& version) {
     s << "};\n\n";
   }
   const RegisterInfo& last = register_map.back();
-  s << "addrmap specular_unit_registers {\n";
-  s << "  name = \"Specular colour intensity device (UA 59965 U): registers, version " << version << "\";\n";
-  s << "  desc = " << quoted("The registers and windows of the TLM-2.0 target (docs/tlm.md) and of "
-                             "specular_ip_axi (docs/rtl_ip.md); they span " + hex(last.end()) + " bytes") << ";\n";
+  // One addrmap, the IP's 0x8000 bytes: the registers, the windows as external memories,
+  // OPERANDS and RESULTS as aliases (no storage of their own), and a register that is not
+  // present at the last word, so that SystemRDL, which sizes an addrmap by its last child
+  // (present or not), gives it the map's size with no wrapper around it.
+  s << "addrmap specular_unit {\n";
+  s << "  name = \"Specular colour intensity device (UA 59965 U), version " << version << "\";\n";
+  s << "  desc = " << quoted(
+      "The registers and windows of the TLM-2.0 targets (docs/tlm.md) and of specular_ip_axi "
+      "(docs/rtl_ip.md). The IP decodes " + hex(map_size) + " bytes: the registers and windows "
+      "(" + hex(last.end()) + " bytes) and above them an address error; specular_ip_axi "
+      "decodes the low ADDR_WIDTH bits of AWADDR and ARADDR (parameter, 15 to 32, default 15: "
+      "these " + hex(map_size) + " bytes), so it answers at any base aligned to 2**ADDR_WIDTH. "
+      "specular_ip_axi has no batch windows (BATCH_CAPACITY reads 0, their offsets answer "
+      "DECERR). Interrupt: done_irq, level, active high, high while STATUS.DONE is set "
+      "(IP-XACT: bus interface done_irq, xilinx.com:signal:interrupt:1.0, SENSITIVITY "
+      "LEVEL_HIGH)") << ";\n";
   s << "  default regwidth = 32;\n";
   s << "  default accesswidth = 32;\n";
   s << "  addressing = regalign;\n\n";
   for (const RegisterInfo& row : register_map) {
-    if (row.words == 1) {
-      write_reg(s, "  ", row.reg, row.reset, row.description,
-                std::string(row.name) + " @ " + hex(row.offset));
+    if (row.words == 1 && is_aliased(row.reg)) {
+      s << "  reg " << type_of(row.reg) << " {\n";
+      write_reg_body(s, "    ", row.reg, row.reset, description_of(row));
+      s << "  };\n";
+      s << "  " << type_of(row.reg) << " " << row.name << " @ " << hex(row.offset) << ";\n";
+    } else if (row.words == 1) {
+      s << "  reg {\n";
+      write_reg_body(s, "    ", row.reg, row.reset, description_of(row));
+      s << "  } " << row.name << " @ " << hex(row.offset) << ";\n";
     } else if (row.reg == Reg::operands || row.reg == Reg::results) {
-      s << "  regfile {\n";
-      s << "    name = " << quoted(row.name) << ";\n";
-      s << "    desc = " << quoted(row.description) << ";\n";
+      // An alias is a sibling of its primary (SystemRDL 2.0 §10.5), so the window's words
+      // are WINDOW_REG beside the registers, not a regfile.
+      s << "  // " << row.name << " @ " << hex(row.offset) << ": " << row.description << "\n";
       for (std::uint32_t w = 0; w < row.words; ++w) {
         const Reg alias = row.reg == Reg::operands ? operand_register(w) : result_register(w);
-        write_reg(s, "    ", alias, reset_of_word(row, w),
-                  std::string("Alias of ") + info(alias).name + " (" + hex(info(alias).offset) +
-                      "): " + info(alias).description,
-                  std::string(info(alias).name) + " @ " + hex(4 * w));
+        s << "  alias " << info(alias).name << " " << type_of(alias) << " " << row.name << "_"
+          << info(alias).name << " @ " << hex(row.offset + 4 * w) << ";\n";
       }
-      s << "  } " << row.name << " @ " << hex(row.offset) << ";\n";
     } else {
       // A batch window: an external memory of 32-bit words (SystemRDL 2.0 §12), so that a
       // register model holds one memory, not a register per word each with a reset.
       s << "  external mem {\n";
       s << "    name = " << quoted(row.name) << ";\n";
-      s << "    desc = " << quoted(row.description) << ";\n";
+      s << "    desc = " << quoted(std::string(row.description) +
+                                   " (the TLM-2.0 targets; not on specular_ip_axi: DECERR)") << ";\n";
       s << "    mementries = " << row.words << ";\n";
       s << "    memwidth = 32;\n";
       s << "    sw = " << (row.access == Access::read_only ? "r" : "rw") << ";\n";
@@ -128,17 +167,14 @@ std::string systemrdl_addrmap(const std::string& version) {
     }
     s << "\n";
   }
-  s << "};\n\n";
-  // SystemRDL sizes an addrmap by its children and has no property for trailing space;
-  // an array's size includes its stride's padding (SystemRDL 2.0 §5.1.2.5, and so
-  // systemrdl-compiler and IP-XACT), so the slot the IP decodes is one registers block
-  // with the map's size as its stride.
-  s << "addrmap specular_unit {\n";
-  s << "  name = \"Specular colour intensity device (UA 59965 U), version " << version << "\";\n";
-  s << "  desc = " << quoted("The IP decodes " + hex(map_size) + " bytes: its registers (" + hex(last.end()) +
-                             " bytes) and above them an address error. One registers block with a " +
-                             hex(map_size) + "-byte stride gives this map its size") << ";\n";
-  s << "  specular_unit_registers registers[1] @ 0x0 += " << hex(map_size) << ";\n";
+  s << "  reg {\n";
+  s << "    name = \"MAP_END\";\n";
+  s << "    desc = " << quoted("No register (ispresent = false): the last word of the " + hex(map_size) +
+                               " bytes the IP decodes, an address error; there only so that the "
+                               "addrmap's size is the map's") << ";\n";
+  s << "    ispresent = false;\n";
+  s << "    field { sw = r; hw = na; } VALUE[31:0] = 32'h0;\n";
+  s << "  } MAP_END @ " << hex(map_size - 4) << ";\n";
   s << "};\n";
   return s.str();
 }

@@ -72,8 +72,9 @@ std::vector<Token> tokenise(const std::string& text, const std::string& path) {
 /// Recursive descent over the tokens of one module header.
 class HeaderParser {
  public:
-  HeaderParser(std::vector<Token> tokens, std::string path)
-      : tokens_(std::move(tokens)), path_(std::move(path)) {}
+  HeaderParser(std::vector<Token> tokens, std::string path,
+               std::map<std::string, std::int64_t> overrides = {})
+      : tokens_(std::move(tokens)), path_(std::move(path)), overrides_(std::move(overrides)) {}
 
   VerilogModule parse() {
     VerilogModule m;
@@ -162,10 +163,21 @@ class HeaderParser {
     }
     fail("a number, a parameter or '('");
   }
-  /// `[msb:lsb]`, evaluated.
-  std::pair<std::int64_t, std::int64_t> range() {
+  /// `[msb:lsb]`, evaluated; the msb's tokens, spaced, in `msb_text` when one names a
+  /// parameter.
+  std::pair<std::int64_t, std::int64_t> range(std::string* msb_text = nullptr) {
     expect_symbol("[");
+    const std::size_t first = pos_;
     const std::int64_t msb = expression();
+    if (msb_text != nullptr) {
+      msb_text->clear();
+      bool names_parameter = false;
+      for (std::size_t i = first; i < pos_; ++i) {
+        names_parameter = names_parameter || tokens_[i].kind == Token::identifier;
+        *msb_text += (i == first ? "" : " ") + tokens_[i].text;
+      }
+      if (!names_parameter) msb_text->clear();
+    }
     expect_symbol(":");
     const std::int64_t lsb = expression();
     expect_symbol("]");
@@ -192,6 +204,11 @@ class HeaderParser {
         p.text = tokens_[pos_++].text;
       } else {
         p.value = expression();
+        const auto set = overrides_.find(p.name);
+        if (set != overrides_.end()) {
+          p.value = set->second;
+          overrides_.erase(set);
+        }
         values_[p.name] = p.value;
       }
       m.parameters.push_back(p);
@@ -206,6 +223,7 @@ class HeaderParser {
     std::string direction;
     bool is_signed = false, is_vector = false;
     std::pair<std::int64_t, std::int64_t> bits{0, 0};
+    std::string msb_text;
     for (;;) {
       if (is_identifier("input") || is_identifier("output") || is_identifier("inout")) {
         const std::string word = tokens_[pos_++].text;
@@ -213,7 +231,8 @@ class HeaderParser {
         accept_identifier("wire") || accept_identifier("reg") || accept_identifier("logic");
         is_signed = accept_identifier("signed");
         is_vector = is_symbol("[");
-        bits = is_vector ? range() : std::make_pair<std::int64_t, std::int64_t>(0, 0);
+        msb_text.clear();
+        bits = is_vector ? range(&msb_text) : std::make_pair<std::int64_t, std::int64_t>(0, 0);
       } else if (direction.empty()) {
         fail("'input' or 'output'");
       }
@@ -224,6 +243,7 @@ class HeaderParser {
       p.is_vector = is_vector;
       p.msb = static_cast<int>(bits.first);
       p.lsb = static_cast<int>(bits.second);
+      p.msb_expression = msb_text;
       m.ports.push_back(p);
       if (accept_symbol(")")) return;
       expect_symbol(",");
@@ -234,6 +254,10 @@ class HeaderParser {
   std::string path_;
   std::size_t pos_ = 0;
   std::map<std::string, std::int64_t> values_;
+  std::map<std::string, std::int64_t> overrides_;  ///< the ones not yet used
+
+ public:
+  const std::map<std::string, std::int64_t>& unused_overrides() const { return overrides_; }
 };
 
 std::string slurp(const std::string& path) {
@@ -246,9 +270,18 @@ std::string slurp(const std::string& path) {
 
 }  // namespace
 
-VerilogModule read_module_header(const std::string& path) {
-  HeaderParser parser(tokenise(slurp(path), path), path);
-  return parser.parse();
+VerilogModule read_module_header(const std::string& path,
+                                 const std::map<std::string, std::int64_t>& overrides) {
+  HeaderParser parser(tokenise(slurp(path), path), path, overrides);
+  VerilogModule m = parser.parse();
+  if (!parser.unused_overrides().empty()) {
+    std::string names;
+    for (const auto& p : m.parameters)
+      if (!p.is_string) names += (names.empty() ? "" : ", ") + p.name;
+    throw VerilogError(path + ": " + m.name + " has no integer parameter '" +
+                       parser.unused_overrides().begin()->first + "' (it has " + names + ")");
+  }
+  return m;
 }
 
 std::map<std::string, VerilogModule> read_modules(const std::vector<std::string>& dirs) {

@@ -29,6 +29,7 @@ struct VerilogPort {
   std::string direction;  ///< "in" or "out" (IP-XACT's words)
   bool is_signed = false;
   int msb = 0, lsb = 0;   ///< at the parameters' defaults; both 0 for a scalar
+  std::string msb_expression;  ///< the msb as written when it names a parameter (ADDR_WIDTH - 1)
   bool is_vector = false;
 };
 
@@ -45,8 +46,11 @@ struct VerilogError : std::runtime_error {
 };
 
 /// Reads the first module of `path`. Throws VerilogError naming the file, the line
-/// and what was expected.
-VerilogModule read_module_header(const std::string& path);
+/// and what was expected. `overrides`: integer parameters set to other values than their
+/// defaults (as an instantiation would), which the ports' widths then follow; a name the
+/// module has no integer parameter of is refused (VerilogError).
+VerilogModule read_module_header(const std::string& path,
+                                 const std::map<std::string, std::int64_t>& overrides = {});
 
 /// Every module of the `.v` files in the folders `dirs`, by name (for the closure below).
 std::map<std::string, VerilogModule> read_modules(const std::vector<std::string>& dirs);

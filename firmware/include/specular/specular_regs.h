@@ -27,7 +27,7 @@
 #define SPECULAR_MAP_VERSION_MAJOR              1u  /**< a driver refuses another major version */
 #define SPECULAR_MAP_SIZE                       0x8000u  /**< bytes the IP decodes from its base: give it a window this size, aligned to it */
 #define SPECULAR_REGISTER_COUNT                 28u  /**< rows of the map (registers and windows) */
-#define SPECULAR_BATCH_CAPACITY                 1024u  /**< operations per batch: BATCH_COS words (BATCH_CAPACITY reads it too) */
+#define SPECULAR_BATCH_CAPACITY                 1024u  /**< operations per batch on the TLM-2.0 targets (their BATCH_CAPACITY, BATCH_COS's words: the most an IP of this map holds); not every IP's: specular_ip_axi reads 0 (no windows), so a driver reads BATCH_CAPACITY */
 /** @} */
 
 /** \name Operand ranges
@@ -89,7 +89,7 @@
  */
 #define SPECULAR_CONFIG_OFFSET                  0x0008u  /**< Byte offset of CONFIG from the IP's base */
 #define SPECULAR_CONFIG_ACCESS                  SPECULAR_ACCESS_RO  /**< Access kind of CONFIG */
-#define SPECULAR_CONFIG_RESET                   0x080D1000u  /**< CONFIG after reset: the default configuration's word */
+#define SPECULAR_CONFIG_RESET                   0x080D1000u  /**< CONFIG after reset: the default configuration's word (specular_ip_axi: its parameter CONFIG_VALUE) */
 /* CONFIG[1:0] NORMALISATION: What ROM 38 holds: the normalisation policy */
 #define SPECULAR_CONFIG_NORMALISATION_SHIFT     0u  /**< Bit position of CONFIG.NORMALISATION (CONFIG[1:0]): What ROM 38 holds: the normalisation policy */
 #define SPECULAR_CONFIG_NORMALISATION_WIDTH     2u  /**< Bits in CONFIG.NORMALISATION */
@@ -196,7 +196,7 @@
  */
 #define SPECULAR_BATCH_CAPACITY_OFFSET          0x0014u  /**< Byte offset of BATCH_CAPACITY from the IP's base */
 #define SPECULAR_BATCH_CAPACITY_ACCESS          SPECULAR_ACCESS_RO  /**< Access kind of BATCH_CAPACITY */
-#define SPECULAR_BATCH_CAPACITY_RESET           0x00000400u  /**< BATCH_CAPACITY after reset */
+#define SPECULAR_BATCH_CAPACITY_RESET           0x00000400u  /**< BATCH_CAPACITY after reset on the TLM-2.0 targets; specular_ip_axi reads 0 */
 /** @} */
 
 /** \name 0x0018 ERROR_ADDRESS (RO)
@@ -351,7 +351,7 @@
  */
 #define SPECULAR_PIN19_H_OFFSET                 0x006Cu  /**< Byte offset of PIN19_H from the IP's base */
 #define SPECULAR_PIN19_H_ACCESS                 SPECULAR_ACCESS_RO  /**< Access kind of PIN19_H */
-#define SPECULAR_PIN19_H_RESET                  0x00000080u  /**< PIN19_H after reset */
+#define SPECULAR_PIN19_H_RESET                  0x00000080u  /**< PIN19_H after reset (specular_ip_axi: its parameter PIN19_H_VALUE) */
 /** @} */
 
 /** \name 0x0070 PIN20_A (RO)
@@ -361,7 +361,7 @@
  */
 #define SPECULAR_PIN20_A_OFFSET                 0x0070u  /**< Byte offset of PIN20_A from the IP's base */
 #define SPECULAR_PIN20_A_ACCESS                 SPECULAR_ACCESS_RO  /**< Access kind of PIN20_A */
-#define SPECULAR_PIN20_A_RESET                  0x00400000u  /**< PIN20_A after reset */
+#define SPECULAR_PIN20_A_RESET                  0x00400000u  /**< PIN20_A after reset (specular_ip_axi: its parameter PIN20_A_VALUE) */
 /** @} */
 
 /** \name 0x0080 OPERANDS (RW, a window of 6 words)

@@ -13,39 +13,17 @@
 #include <string>
 #include <tuple>
 
+#include "support/firmware_example_elf.h"
 #include "support/rv32_hart.h"
-#include "support/scratch.h"
-#include "support/installed_package.h"
 #include "support/subprocess.h"
 
 namespace specular {
 namespace {
 
 using firmware_targets::Kind;
+using testing_support::link_example;
 using testing_support::run_command;
-using testing_support::scratch_subdir;
 using testing_support::shell_quoted;
-
-/// Links the example as tests/firmware/CMakeLists.txt does; returns the ELF's path.
-std::filesystem::path link_example(const std::string& variant) {
-  const std::filesystem::path dir = scratch_subdir("elf");
-  const std::string source = SPECULAR_SOURCE_DIR, example = source + "/examples/firmware_rv32";
-  std::string defines;
-  if (variant != "poll") defines += " -DEXAMPLE_WAIT_IRQ";
-  if (variant == "irq_direct") defines += " -DEXAMPLE_IRQ_DIRECT";
-  const std::filesystem::path elf = dir / "firmware_rv32.elf";
-  const auto outcome = run_command(
-      "riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 --specs=picolibc.specs -std=c99 -Wall -Wextra"
-      " -Wpedantic -Werror -ffreestanding -Os -nostartfiles -Wl,--no-warn-rwx-segments -T " +
-          shell_quoted(example + "/link.ld") + " -I" + shell_quoted(source + "/firmware/include") + " -I" +
-          shell_quoted(example) + " -I" + shell_quoted(SPECULAR_EXAMPLE_EXPECTED_DIR) + defines + " " +
-          shell_quoted(example + "/startup.S") + " " + shell_quoted(example + "/main.c") + " " +
-          shell_quoted(source + "/firmware/src/specular_driver.c") + " -o " + shell_quoted(elf.string()),
-      dir, "link");
-  EXPECT_EQ(outcome.status, 0) << "(riscv64-unknown-elf-gcc and picolibc-riscv64-unknown-elf are in "
-                                  "scripts/setup.sh)\n" << outcome.out << outcome.err;
-  return elf;
-}
 
 class FirmwareExampleRv32 : public testing::TestWithParam<std::tuple<Kind, std::string>> {};
 

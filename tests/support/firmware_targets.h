@@ -6,6 +6,7 @@
 #define SPECULAR_TESTS_SUPPORT_FIRMWARE_TARGETS_H
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -42,6 +43,18 @@ inline std::string target_name(Kind kind) {
 }
 
 inline std::string kind_name(const testing::TestParamInfo<Kind>& info) { return target_name(info.param); }
+
+/// How a test's CPU reaches its target: empty, its socket bound straight to the target's;
+/// else called during elaboration to bind them through something between (a bus trace
+/// recorder, tests/support/bus_trace_recorder.h).
+using Wiring = std::function<void(tlm::tlm_initiator_socket<32>& cpu, SpecularTarget& target)>;
+
+inline void wire(tlm::tlm_initiator_socket<32>& cpu, SpecularTarget& target, const Wiring& wiring) {
+  if (wiring)
+    wiring(cpu, target);
+  else
+    cpu.bind(target.socket);
+}
 
 inline std::unique_ptr<SpecularTarget> make_target(const char* name, Kind kind, const Config& config) {
   const sc_core::sc_time period(10, sc_core::SC_NS);

@@ -52,11 +52,13 @@ struct Rv32Hart : sc_core::sc_module {
   std::uint32_t probe_entry = ~0u, probe_return = ~0u;
   std::uint64_t probe_started = 0, probe_instructions = 0;
 
-  Rv32Hart(sc_core::sc_module_name name, Kind kind, bool plic_wired, const std::string& elf)
+  /// `wiring`: how the socket reaches the target (firmware_targets.h; empty: straight).
+  Rv32Hart(sc_core::sc_module_name name, Kind kind, bool plic_wired, const std::string& elf,
+           const Wiring& wiring = {})
       : sc_module(name), with_plic(plic_wired) {
     SPECULAR_HAS_PROCESS(Rv32Hart);
     target = make_target("ip", kind, Config{});
-    socket.bind(target->socket);
+    wire(socket, *target, wiring);
     target->on_done_irq([this](bool level) {
       if (level && !line && with_plic) plic.pending = true;  // the gateway's edge
       line = level;

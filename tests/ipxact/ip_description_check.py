@@ -12,7 +12,9 @@
       descent), against the same map.
   ip_description_check.py rtl-ports EXPORT SOURCE_DIR SCRATCH YOSYS ROM_DIR
       the component's Verilog ports, module parameters and file sets against Yosys's
-      reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v.
+      reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v;
+      every file a Verilog file set or rom_images names exists in the source tree, each
+      ROM image beside the Verilog that reads it.
   ip_description_check.py resets EXPORT SOURCE_DIR SCRATCH IVERILOG VVP ROM_DIR
       specular_ip_axi.xml's resets of CONFIG, PIN19_H and PIN20_A, evaluated with
       parameter values other than the defaults, against what the IP reads back when

@@ -2,10 +2,12 @@
 //
 // ROM 5 and ROM 38 of rtl/ read `$readmemh` images in Icarus, Yosys and the silicon flow
 // (the verilated twin is filled from the same words in C++, twin/src/rom_loader.h). They
-// come from the tables the core and the SystemC model use (specular::rom_images), at
-// build time, for the widths given: never hand-copied, never committed. The same tool checks a dump
-// the RTL wrote while reading its ROMs through their ports (rtl/tb/rom_read_tb.v), so a
-// test proves every word the RTL reads equals the table's.
+// come from the tables the core and the SystemC model use (specular::rom_images), for the
+// widths given: never hand-copied. The default widths' images are committed beside the
+// Verilog that reads them (rtl/sources.cmake), and test rtl_rom_images_current fails when
+// this tool would write them differently; other widths are written in the build. The
+// same tool checks a dump the RTL wrote while reading its ROMs through their ports
+// (rtl/tb/rom_read_tb.v), so a test proves every word the RTL reads equals the table's.
 //
 //   specular_romgen --out-dir DIR [--bank-bits B] [--width NAME=VALUE]...
 //       writes DIR/rom5.hex (2^rom5_addr_bits words) and DIR/rom38.hex (2^B banks of

@@ -12,7 +12,9 @@
       descent), against the same map.
   ip_description_check.py rtl-ports EXPORT SOURCE_DIR SCRATCH YOSYS ROM_DIR
       the component's Verilog ports, module parameters and file sets against Yosys's
-      reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v.
+      reading of rtl/device/specular_device.v and rtl/device/specular_device_sync.v;
+      every file a Verilog file set or rom_images names exists in the source tree, each
+      ROM image beside the Verilog that reads it.
   ip_description_check.py resets EXPORT SOURCE_DIR SCRATCH IVERILOG VVP ROM_DIR
       specular_ip_axi.xml's resets of CONFIG, PIN19_H and PIN20_A, evaluated with
       parameter values other than the defaults, against what the IP reads back when
@@ -566,12 +568,29 @@ def check_rtl_ports(export, source, scratch, yosys, rom_dir):
             fail.check(os.path.isfile(os.path.join(source, "ip", rel)), f"{rel}: no such file")
         # the ROM images the top reads ($readmemh), in their own file set, named by its view
         roms = file_sets.get("rom_images")
-        listed = [] if roms is None else [os.path.basename(text_of(f, "name")) for f in roms.findall(Q + "file")]
-        fail.equal(sorted(listed), ["rom38.hex", "rom5.hex"], f"{file}: file set rom_images")
-        for name in listed:
-            fail.check(os.path.isfile(os.path.join(rom_dir, name)), f"rom_images: specular_romgen wrote no {name}")
+        named = [] if roms is None else [text_of(f, "name") for f in roms.findall(Q + "file")]
+        fail.equal(sorted(os.path.basename(n) for n in named), ["rom38.hex", "rom5.hex"],
+                   f"{file}: file set rom_images")
+        # each image beside a file of the top's set that reads it with $readmemh (and names it
+        # as its default): where Yosys finds it after its working folder, in both trees
+        readers = [os.path.join(source, "ip", text_of(f, "name"))
+                   for f in ([] if file_set is None else file_set.findall(Q + "file"))]
+        for rel in named:
+            image = os.path.basename(rel)
+            beside = [v for v in readers if os.path.dirname(v) == os.path.dirname(os.path.join(source, "ip", rel))
+                      and os.path.isfile(v) and "$readmemh" in open(v, encoding="utf-8").read()
+                      and f'"{image}"' in open(v, encoding="utf-8").read()]
+            fail.check(beside, f"{file}: rom_images {rel} is not beside the Verilog that reads {image}")
         refs = [] if inst is None else [text_of(r, "localName") for r in inst.findall(Q + "fileSetRef")]
         fail.check("rom_images" in refs, f"{view}: no fileSetRef rom_images")
+        # every file a file set names relative to ip/ exists in the source tree (the install
+        # mirrors ip/ and rtl/); ../../../ names the installed SystemC package (headers below)
+        for fs in file_sets.values():
+            for f in fs.findall(Q + "file"):
+                rel = text_of(f, "name")
+                if not rel.startswith("../../../"):
+                    fail.check(os.path.isfile(os.path.join(source, "ip", rel)),
+                               f"{file}: file set {text_of(fs, 'name')} names {rel}, not in the source tree")
     root = etree.parse(os.path.join(source, "ip", "specular_unit.xml")).getroot()
     file_sets = {text_of(s, "name"): s for s in root.findall(f"{Q}fileSets/{Q}fileSet")}
     # the SystemC headers listed are headers of the package

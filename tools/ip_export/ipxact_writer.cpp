@@ -534,16 +534,19 @@ void write_file_sets(Xml& x, const ComponentFacts& facts) {
     x.close("fileSet");
   }
   // ROM 5's and ROM 38's contents, which rom5.v and rom38.v read with $readmemh from the
-  // files their IMAGE parameters name (the tops' ROM5_IMAGE, ROM38_IMAGE)
+  // files their IMAGE parameters name (the tops' ROM5_IMAGE, ROM38_IMAGE). Committed and
+  // installed beside those two files (rtl/device/), where Yosys looks after its working
+  // folder: the paths hold in the source tree and in the install alike.
   x.open("fileSet");
   x.leaf("name", "rom_images");
   x.leaf("description",
          "The ROM images the Verilog tops read with $readmemh (parameters ROM5_IMAGE, "
          "ROM38_IMAGE), at the default widths, written by specular_romgen from the C++ "
-         "tables and installed beside the Verilog (share/SpecularUnit/rtl/)");
+         "tables; beside rom5.v and rom38.v in the source tree's rtl/device/ and in "
+         "share/SpecularUnit/rtl/device/");
   for (const char* image : {"rom5.hex", "rom38.hex"}) {
     x.open("file");
-    x.leaf("name", std::string("../rtl/") + image);
+    x.leaf("name", std::string("../rtl/device/") + image);
     x.leaf("fileType", "user", "user=\"verilogReadmemhImage\"");
     x.close("file");
   }

@@ -13,9 +13,9 @@
 #include <string>
 #include <tuple>
 
-#include "support/rv32_hart.h"
-#include "support/scratch.h"
 #include "support/installed_package.h"
+#include "support/rv32_example_link.h"
+#include "support/rv32_hart.h"
 #include "support/subprocess.h"
 
 namespace specular {
@@ -23,29 +23,9 @@ namespace {
 
 using firmware_targets::Kind;
 using testing_support::run_command;
-using testing_support::scratch_subdir;
 using testing_support::shell_quoted;
 
-/// Links the example as tests/firmware/CMakeLists.txt does; returns the ELF's path.
-std::filesystem::path link_example(const std::string& variant) {
-  const std::filesystem::path dir = scratch_subdir("elf");
-  const std::string source = SPECULAR_SOURCE_DIR, example = source + "/examples/firmware_rv32";
-  std::string defines;
-  if (variant != "poll") defines += " -DEXAMPLE_WAIT_IRQ";
-  if (variant == "irq_direct") defines += " -DEXAMPLE_IRQ_DIRECT";
-  const std::filesystem::path elf = dir / "firmware_rv32.elf";
-  const auto outcome = run_command(
-      "riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 --specs=picolibc.specs -std=c99 -Wall -Wextra"
-      " -Wpedantic -Werror -ffreestanding -Os -nostartfiles -Wl,--no-warn-rwx-segments -T " +
-          shell_quoted(example + "/link.ld") + " -I" + shell_quoted(source + "/firmware/include") + " -I" +
-          shell_quoted(example) + " -I" + shell_quoted(SPECULAR_EXAMPLE_EXPECTED_DIR) + defines + " " +
-          shell_quoted(example + "/startup.S") + " " + shell_quoted(example + "/main.c") + " " +
-          shell_quoted(source + "/firmware/src/specular_driver.c") + " -o " + shell_quoted(elf.string()),
-      dir, "link");
-  EXPECT_EQ(outcome.status, 0) << "(riscv64-unknown-elf-gcc and picolibc-riscv64-unknown-elf are in "
-                                  "scripts/setup.sh)\n" << outcome.out << outcome.err;
-  return elf;
-}
+std::filesystem::path link_example(const std::string& variant) { return testing_support::link_rv32_example(variant); }
 
 class FirmwareExampleRv32 : public testing::TestWithParam<std::tuple<Kind, std::string>> {};
 
@@ -55,7 +35,8 @@ TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
   const std::filesystem::path elf = link_example(variant);
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
-  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", kind, variant == "irq", elf.string());
+  hart = std::make_unique<firmware_targets::Rv32Hart>(
+      "hart", kind, variant == "irq" ? firmware_targets::Wiring::plic : firmware_targets::Wiring::hart, elf.string());
   // The instructions specular_shade takes for the row (issue 47: batches from a CPU).
   const auto nm = run_command("riscv64-unknown-elf-nm " + shell_quoted(elf), elf.parent_path(), "nm");
   const std::size_t at = nm.out.find(" T specular_shade\n");
@@ -71,6 +52,7 @@ TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
                                "specular_check_error: cause 2 (N out of range)"),
             std::string::npos);
   EXPECT_EQ(hart->faults, 1u);
+  EXPECT_EQ(hart->timer_interrupts, 0u) << "the watchdog fired";
   if (variant == "poll") {
     EXPECT_EQ(hart->interrupts, 0u);
   } else {
@@ -89,7 +71,7 @@ TEST(FirmwareExampleRv32Faults, APageFaultAsRiscvVpRaisesItIsSkippedToo) {
   const std::filesystem::path elf = link_example("poll");
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
-  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, false, elf.string());
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, firmware_targets::Wiring::hart, elf.string());
   hart->load_fault = 13u;
   hart->store_fault = 15u;
   sc_core::sc_start();

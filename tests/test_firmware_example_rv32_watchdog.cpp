@@ -9,7 +9,9 @@
 //   - the direct build with done_irq through a PLIC it never programs: nothing wakes its
 //     wfi but the watchdog's timer;
 //   - the PLIC build on a hart with no PLIC at all: the first PLIC store faults, an
-//     unexpected trap, exit 40, the line naming the missing PLIC.
+//     unexpected trap, exit 40, the line naming the missing PLIC;
+//   - the PLIC build for context 1 with SiFive's strides on riscv-vp's packed layout
+//     (and, passing, with riscv-vp's strides).
 // The passing runs (tests/test_firmware_example_rv32.cpp) check the timer never fires.
 #include <gtest/gtest.h>
 
@@ -29,13 +31,21 @@ using firmware_targets::Wiring;
 
 constexpr double default_bound_us = 65536.0;  // main.c's EXAMPLE_WATCHDOG_TICKS, at 1 tick per us
 
+/// The PLIC's layout on the hart: the context the firmware must use, bytes per context.
+struct PlicLayout {
+  std::uint32_t context = 0, enable_stride = 0x80u, context_stride = 0x1000u;
+};
+
 /// Runs `variant` (with `extra` compiler arguments) on the lt target with done_irq wired
 /// as `wiring`; the hart stays alive until exit, as SystemC wants.
-Rv32Hart& run(const std::string& variant, Wiring wiring, const std::string& extra = "") {
+Rv32Hart& run(const std::string& variant, Wiring wiring, const std::string& extra = "", PlicLayout layout = {}) {
   const std::filesystem::path elf = testing_support::link_rv32_example(variant, extra);
   static std::unique_ptr<Rv32Hart> hart;
   hart = std::make_unique<Rv32Hart>("hart", Kind::lt, wiring, elf.string());
   hart->limit = 50000000;  // the storm below takes about 7 million instructions
+  hart->plic.context = layout.context;
+  hart->plic.enable_stride = layout.enable_stride;
+  hart->plic.context_stride = layout.context_stride;
   sc_core::sc_start();
   std::cout << hart->console << "(" << hart->instructions << " instructions, " << hart->interrupts
             << " external and " << hart->timer_interrupts << " timer interrupts, stopped at "
@@ -101,6 +111,34 @@ TEST(FirmwareExampleRv32Watchdog, ThePlicBuildWithNoPlicOnTheBusFailsAtItsFirstP
             std::string::npos)
       << hart.console;
   EXPECT_NE(hart.console.find("FAIL: unexpected trap, mcause 0x00000007 at "), std::string::npos) << hart.console;
+}
+
+// The PLIC's context and strides are build options (issue 60): riscv-vp's FE310_PLIC
+// (hifive-vp: enables 8 bytes, threshold/claim 8 bytes per context) at context 1.
+constexpr PlicLayout riscv_vp_context_1{1u, 8u, 8u};
+
+TEST(FirmwareExampleRv32PlicLayout, ThePlicBuildForRiscvVpsStridesPassesAtContextOne) {
+  const Rv32Hart& hart = run("irq", Wiring::plic,
+                             " -DEXAMPLE_PLIC_CONTEXT=1u -DEXAMPLE_PLIC_ENABLE_STRIDE=8u -DEXAMPLE_PLIC_CONTEXT_STRIDE=8u",
+                             riscv_vp_context_1);
+  EXPECT_TRUE(hart.exited) << hart.error;
+  EXPECT_EQ(hart.exit_code, 0) << hart.console;
+  EXPECT_NE(hart.console.find("\nPASS: every result equal to Core\n"), std::string::npos) << hart.console;
+  EXPECT_GE(hart.plic.claims, 1u);
+  EXPECT_EQ(hart.plic.completes, hart.plic.claims);
+  EXPECT_EQ(hart.plic.other_accesses, 0u);
+}
+
+// SiFive's strides (the defaults) on that PLIC: the enable and threshold land in other
+// contexts' registers, the source is never enabled for context 1, and the watchdog says so.
+TEST(FirmwareExampleRv32PlicLayout, SiFivesStridesOnRiscvVpsPlicFireTheWatchdogNamingTheContext) {
+  const Rv32Hart& hart = run("irq", Wiring::plic, " -DEXAMPLE_PLIC_CONTEXT=1u", riscv_vp_context_1);
+  expect_watchdog(hart, "FAIL: no done_irq interrupt within 65536 mtime ticks (waited on source 1 of the PLIC at "
+                        "0x0c000000, context 1; no external interrupt came: done_irq on another source, or the "
+                        "context or the PLIC's strides not the platform's?)");
+  EXPECT_EQ(hart.plic.enable, 0u);
+  EXPECT_GT(hart.plic.other_accesses, 0u);
+  EXPECT_EQ(hart.timer_interrupts, 1u);
 }
 
 }  // namespace

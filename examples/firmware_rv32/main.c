@@ -265,7 +265,8 @@ static void watchdog_fire(void) {
     say(", context ");
     say_signed(EXAMPLE_PLIC_CONTEXT);
     if (example_unclaimed_interrupts == 0u) {
-      say("; no external interrupt came: is done_irq on that source, the context hart 0's machine mode?");
+      say("; no external interrupt came: done_irq on another source, or the context or the PLIC's strides not "
+          "the platform's?");
     } else {
       say("; ");
       say_signed(example_unclaimed_interrupts);
@@ -305,7 +306,8 @@ static void watchdog_check(void) {}
 /* ---- interrupts ----------------------------------------------------------------- */
 
 #if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
-/* The PLIC's registers (SiFive's layout, as FE310's and riscv-vp's PLIC): offsets. */
+/* The PLIC's registers: offsets (SiFive's layout; the per-context strides are options,
+ * riscv-vp's FE310_PLIC packs its contexts closer). */
 #define PLIC_PRIORITY (4u * EXAMPLE_PLIC_SOURCE)
 #define PLIC_ENABLE (0x2000u + EXAMPLE_PLIC_ENABLE_STRIDE * EXAMPLE_PLIC_CONTEXT + 4u * (EXAMPLE_PLIC_SOURCE / 32u))
 #define PLIC_THRESHOLD (0x200000u + EXAMPLE_PLIC_CONTEXT_STRIDE * EXAMPLE_PLIC_CONTEXT)

@@ -118,9 +118,8 @@ TEST(FirmwareExampleRv32Watchdog, ThePlicBuildWithNoPlicOnTheBusFailsAtItsFirstP
 constexpr PlicLayout riscv_vp_context_1{1u, 8u, 8u};
 
 TEST(FirmwareExampleRv32PlicLayout, ThePlicBuildForRiscvVpsStridesPassesAtContextOne) {
-  const Rv32Hart& hart = run("irq", Wiring::plic,
-                             " -DEXAMPLE_PLIC_CONTEXT=1u -DEXAMPLE_PLIC_ENABLE_STRIDE=8u -DEXAMPLE_PLIC_CONTEXT_STRIDE=8u",
-                             riscv_vp_context_1);
+  const std::string defines = " -DEXAMPLE_PLIC_CONTEXT=1u -DEXAMPLE_PLIC_ENABLE_STRIDE=8u -DEXAMPLE_PLIC_CONTEXT_STRIDE=8u";
+  const Rv32Hart& hart = run("irq", Wiring::plic, defines, riscv_vp_context_1);
   EXPECT_TRUE(hart.exited) << hart.error;
   EXPECT_EQ(hart.exit_code, 0) << hart.console;
   EXPECT_NE(hart.console.find("\nPASS: every result equal to Core\n"), std::string::npos) << hart.console;

@@ -161,9 +161,16 @@ struct Rv32Hart : sc_core::sc_module {
   /// mtimecmp's words are writable, mtime's read-only; msip and the rest read 0.
   void clint_access(bool write, std::uint32_t offset, std::uint32_t& value) {
     const std::uint64_t now = mtime();
+    const std::uint64_t low = 0xFFFFFFFFull;
     switch (offset) {
-      case 0x4000: if (write) mtimecmp = (mtimecmp & ~0xFFFFFFFFull) | value; else value = std::uint32_t(mtimecmp); return;
-      case 0x4004: if (write) mtimecmp = (mtimecmp & 0xFFFFFFFFull) | std::uint64_t(value) << 32; else value = std::uint32_t(mtimecmp >> 32); return;
+      case 0x4000:
+        if (write) mtimecmp = (mtimecmp & ~low) | value;
+        else value = std::uint32_t(mtimecmp);
+        return;
+      case 0x4004:
+        if (write) mtimecmp = (mtimecmp & low) | std::uint64_t(value) << 32;
+        else value = std::uint32_t(mtimecmp >> 32);
+        return;
       case 0xBFF8: if (!write) value = std::uint32_t(now); return;
       case 0xBFFC: if (!write) value = std::uint32_t(now >> 32); return;
       default: if (!write) value = 0u;

@@ -205,7 +205,9 @@ static int same(const char* what, int64_t index, const char* part, int64_t got, 
 #define CLINT_MTIMECMP 0x4000u /* hart 0's; SiFive's layout, as FE310's and riscv-vp's */
 #define CLINT_MTIME 0xBFF8u
 
-static volatile uint32_t* clint(uint32_t offset) { return (volatile uint32_t*)((uintptr_t)EXAMPLE_CLINT_BASE + offset); }
+static volatile uint32_t* clint(uint32_t offset) {
+  return (volatile uint32_t*)((uintptr_t)EXAMPLE_CLINT_BASE + offset);
+}
 
 static uint64_t mtime_now(void) {
   uint32_t high, low;

@@ -27,7 +27,8 @@ struct Plic {
   void access(tlm::tlm_command command, std::uintptr_t offset, std::uint32_t* word, bool interrupts_on) {
     const bool read = command == tlm::TLM_READ_COMMAND;
     std::uint32_t* reg = nullptr;
-    const std::uintptr_t enable_at = 0x2000u + enable_stride * context, threshold_at = 0x200000u + context_stride * context;
+    const std::uintptr_t enable_at = 0x2000u + enable_stride * context;
+    const std::uintptr_t threshold_at = 0x200000u + context_stride * context;
     if (offset == 4u * source) reg = &priority;
     if (offset == enable_at) reg = &enable;
     if (offset == threshold_at) reg = &threshold;

@@ -36,7 +36,7 @@ TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
   hart = std::make_unique<firmware_targets::Rv32Hart>(
-      "hart", kind, variant == "irq" ? firmware_targets::Wiring::plic : firmware_targets::Wiring::hart, elf.string());
+      "hart", kind, variant == "irq" ? firmware_targets::IrqWiring::plic : firmware_targets::IrqWiring::hart, elf.string());
   // The instructions specular_shade takes for the row (issue 47: batches from a CPU).
   const auto nm = run_command("riscv64-unknown-elf-nm " + shell_quoted(elf), elf.parent_path(), "nm");
   const std::size_t at = nm.out.find(" T specular_shade\n");
@@ -71,7 +71,7 @@ TEST(FirmwareExampleRv32Faults, APageFaultAsRiscvVpRaisesItIsSkippedToo) {
   const std::filesystem::path elf = link_example("poll");
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
-  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, firmware_targets::Wiring::hart, elf.string());
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, firmware_targets::IrqWiring::hart, elf.string());
   hart->load_fault = 13u;
   hart->store_fault = 15u;
   sc_core::sc_start();

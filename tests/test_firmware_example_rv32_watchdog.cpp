@@ -27,7 +27,7 @@ namespace {
 
 using firmware_targets::Kind;
 using firmware_targets::Rv32Hart;
-using firmware_targets::Wiring;
+using firmware_targets::IrqWiring;
 
 constexpr double default_bound_us = 65536.0;  // main.c's EXAMPLE_WATCHDOG_TICKS, at 1 tick per us
 
@@ -38,7 +38,7 @@ struct PlicLayout {
 
 /// Runs `variant` (with `extra` compiler arguments) on the lt target with done_irq wired
 /// as `wiring`; the hart stays alive until exit, as SystemC wants.
-Rv32Hart& run(const std::string& variant, Wiring wiring, const std::string& extra = "", PlicLayout layout = {}) {
+Rv32Hart& run(const std::string& variant, IrqWiring wiring, const std::string& extra = "", PlicLayout layout = {}) {
   const std::filesystem::path elf = testing_support::link_rv32_example(variant, extra);
   static std::unique_ptr<Rv32Hart> hart;
   hart = std::make_unique<Rv32Hart>("hart", Kind::lt, wiring, elf.string());
@@ -65,7 +65,7 @@ void expect_watchdog(const Rv32Hart& hart, const std::string& fail_line) {
 }
 
 TEST(FirmwareExampleRv32Watchdog, ThePlicBuildWithDoneIrqStraightToTheHartFailsNamingThePlicSource) {
-  const Rv32Hart& hart = run("irq", Wiring::hart_beside_plic);
+  const Rv32Hart& hart = run("irq", IrqWiring::hart_beside_plic);
   expect_watchdog(hart, "FAIL: no done_irq interrupt within 65536 mtime ticks (waited on source 1 of the PLIC at "
                         "0x0c000000, context 0; " +
                             std::to_string(hart.interrupts) +
@@ -80,7 +80,7 @@ TEST(FirmwareExampleRv32Watchdog, ThePlicBuildWithDoneIrqStraightToTheHartFailsN
 }
 
 TEST(FirmwareExampleRv32Watchdog, TheDirectBuildWithDoneIrqThroughAPlicFailsNamingTheExternalInterrupt) {
-  const Rv32Hart& hart = run("irq_direct", Wiring::plic);
+  const Rv32Hart& hart = run("irq_direct", IrqWiring::plic);
   expect_watchdog(hart, "FAIL: no done_irq interrupt within 65536 mtime ticks (waited on the machine external "
                         "interrupt, done_irq straight to the hart; none came: done_irq wired to a PLIC? that is the "
                         "irq build)");
@@ -93,7 +93,7 @@ TEST(FirmwareExampleRv32Watchdog, TheDirectBuildWithDoneIrqThroughAPlicFailsNami
 
 // The bound is a build option: 500 ticks fire after 0.5 ms instead of 65.5 ms.
 TEST(FirmwareExampleRv32Watchdog, TheBoundIsABuildOption) {
-  const Rv32Hart& hart = run("irq_direct", Wiring::plic, " -DEXAMPLE_WATCHDOG_TICKS=500u");
+  const Rv32Hart& hart = run("irq_direct", IrqWiring::plic, " -DEXAMPLE_WATCHDOG_TICKS=500u");
   expect_watchdog(hart, "FAIL: no done_irq interrupt within 500 mtime ticks (waited on the machine external "
                         "interrupt, done_irq straight to the hart; none came: done_irq wired to a PLIC? that is the "
                         "irq build)");
@@ -102,7 +102,7 @@ TEST(FirmwareExampleRv32Watchdog, TheBoundIsABuildOption) {
 }
 
 TEST(FirmwareExampleRv32Watchdog, ThePlicBuildWithNoPlicOnTheBusFailsAtItsFirstPlicStore) {
-  const Rv32Hart& hart = run("irq", Wiring::hart);
+  const Rv32Hart& hart = run("irq", IrqWiring::hart);
   EXPECT_TRUE(hart.exited) << hart.error;
   EXPECT_EQ(hart.exit_code, 40) << hart.console;
   // The priority of source 1 (offset 4) is the first PLIC register written.
@@ -119,7 +119,7 @@ constexpr PlicLayout riscv_vp_context_1{1u, 8u, 8u};
 
 TEST(FirmwareExampleRv32PlicLayout, ThePlicBuildForRiscvVpsStridesPassesAtContextOne) {
   const std::string defines = " -DEXAMPLE_PLIC_CONTEXT=1u -DEXAMPLE_PLIC_ENABLE_STRIDE=8u -DEXAMPLE_PLIC_CONTEXT_STRIDE=8u";
-  const Rv32Hart& hart = run("irq", Wiring::plic, defines, riscv_vp_context_1);
+  const Rv32Hart& hart = run("irq", IrqWiring::plic, defines, riscv_vp_context_1);
   EXPECT_TRUE(hart.exited) << hart.error;
   EXPECT_EQ(hart.exit_code, 0) << hart.console;
   EXPECT_NE(hart.console.find("\nPASS: every result equal to Core\n"), std::string::npos) << hart.console;
@@ -131,7 +131,7 @@ TEST(FirmwareExampleRv32PlicLayout, ThePlicBuildForRiscvVpsStridesPassesAtContex
 // SiFive's strides (the defaults) on that PLIC: the enable and threshold land in other
 // contexts' registers, the source is never enabled for context 1, and the watchdog says so.
 TEST(FirmwareExampleRv32PlicLayout, SiFivesStridesOnRiscvVpsPlicFireTheWatchdogNamingTheContext) {
-  const Rv32Hart& hart = run("irq", Wiring::plic, " -DEXAMPLE_PLIC_CONTEXT=1u", riscv_vp_context_1);
+  const Rv32Hart& hart = run("irq", IrqWiring::plic, " -DEXAMPLE_PLIC_CONTEXT=1u", riscv_vp_context_1);
   expect_watchdog(hart, "FAIL: no done_irq interrupt within 65536 mtime ticks (waited on source 1 of the PLIC at "
                         "0x0c000000, context 1; no external interrupt came: done_irq on another source, or the "
                         "context or the PLIC's strides not the platform's?)");

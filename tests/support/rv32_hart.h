@@ -37,7 +37,7 @@ namespace specular {
 namespace firmware_targets {
 
 /// Where done_irq goes.
-enum class Wiring {
+enum class IrqWiring {
   hart,             ///< straight to the machine external interrupt; no PLIC on the bus
   plic,             ///< through the PLIC (its edge gateway), whose output is the external interrupt
   hart_beside_plic  ///< straight to the hart; a PLIC on the bus with nothing on its source
@@ -52,7 +52,7 @@ struct Rv32Hart : sc_core::sc_module {
   std::vector<std::uint8_t> ram = std::vector<std::uint8_t>(ram_size);
   std::uint32_t x[32] = {}, pc = 0;
   std::uint32_t mstatus = 0, mie = 0, mtvec = 0, mepc = 0, mcause = 0, mtval = 0, mscratch = 0;
-  Wiring wiring = Wiring::hart;
+  IrqWiring irq_wiring = IrqWiring::hart;
   bool line = false, exited = false, stuck = false;
   std::uint64_t mtimecmp = ~std::uint64_t(0);  // reset value unspecified; here: never
   int exit_code = -1;
@@ -68,13 +68,13 @@ struct Rv32Hart : sc_core::sc_module {
   std::uint32_t probe_entry = ~0u, probe_return = ~0u;
   std::uint64_t probe_started = 0, probe_instructions = 0;
 
-  Rv32Hart(sc_core::sc_module_name name, Kind kind, Wiring irq_wiring, const std::string& elf)
-      : sc_module(name), wiring(irq_wiring) {
+  Rv32Hart(sc_core::sc_module_name name, Kind kind, IrqWiring irq_wiring_, const std::string& elf)
+      : sc_module(name), irq_wiring(irq_wiring_) {
     SPECULAR_HAS_PROCESS(Rv32Hart);
     target = make_target("ip", kind, Config{});
     socket.bind(target->socket);
     target->on_done_irq([this](bool level) {
-      if (level && !line && wiring == Wiring::plic) plic.pending = true;  // the gateway's edge
+      if (level && !line && irq_wiring == IrqWiring::plic) plic.pending = true;  // the gateway's edge
       line = level;
       irq_event.notify();
     });
@@ -115,7 +115,7 @@ struct Rv32Hart : sc_core::sc_module {
       }
       return true;
     }
-    if (wiring != Wiring::hart && address >= Plic::base && address < Plic::base + Plic::size && size == 4) {
+    if (irq_wiring != IrqWiring::hart && address >= Plic::base && address < Plic::base + Plic::size && size == 4) {
       plic.access(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, address - Plic::base, &value,
                   (mstatus & 8u) != 0u);
       return true;
@@ -150,7 +150,7 @@ struct Rv32Hart : sc_core::sc_module {
     mstatus = (mstatus & ~0x88u) | ((mstatus & 8u) << 4);  // MPIE = MIE, MIE = 0 (MPP stays M)
     pc = mtvec & ~3u;
   }
-  bool external_pending() const { return wiring == Wiring::plic ? plic.interrupt() : line; }
+  bool external_pending() const { return irq_wiring == IrqWiring::plic ? plic.interrupt() : line; }
   std::uint32_t mip() const { return (external_pending() ? 0x800u : 0u) | (mtime() >= mtimecmp ? 0x80u : 0u); }
 
   // ---- the CLINT --------------------------------------------------------------------

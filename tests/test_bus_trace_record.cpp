@@ -26,7 +26,7 @@
 #include "specular/tlm/lt_target.h"
 #include "support/bus_trace_recorder.h"
 #include "support/firmware_driver_cpu.h"
-#include "support/firmware_example_elf.h"
+#include "support/rv32_example_link.h"
 #include "support/rv32_hart.h"
 #include "support/scratch.h"
 #include "support/subprocess.h"
@@ -114,11 +114,14 @@ TEST_P(BusTraceRecordExample, TheElfOnAxiPassesAndItsAccessesAreRecorded) {
   const auto start = std::chrono::steady_clock::now();
   const std::string variant = GetParam(), name = "example_" + variant + ".trace";
   remove_shared(name);
-  const std::filesystem::path elf = testing_support::link_example(variant);
+  const std::filesystem::path elf = testing_support::link_rv32_example(variant);
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<BusTraceRecorder> recorder;
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
-  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::axi, variant == "irq", elf.string(),
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::axi,
+                                                      variant == "irq" ? firmware_targets::IrqWiring::plic
+                                                                       : firmware_targets::IrqWiring::hart,
+                                                      elf.string(),
                                                       recording(recorder));
   sc_core::sc_start();
   std::cout << hart->console;

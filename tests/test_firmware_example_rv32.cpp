@@ -13,7 +13,8 @@
 #include <string>
 #include <tuple>
 
-#include "support/firmware_example_elf.h"
+#include "support/installed_package.h"
+#include "support/rv32_example_link.h"
 #include "support/rv32_hart.h"
 #include "support/subprocess.h"
 
@@ -21,19 +22,21 @@ namespace specular {
 namespace {
 
 using firmware_targets::Kind;
-using testing_support::link_example;
 using testing_support::run_command;
 using testing_support::shell_quoted;
+
+using testing_support::link_rv32_example;
 
 class FirmwareExampleRv32 : public testing::TestWithParam<std::tuple<Kind, std::string>> {};
 
 TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
   const Kind kind = std::get<0>(GetParam());
   const std::string variant = std::get<1>(GetParam());
-  const std::filesystem::path elf = link_example(variant);
+  const std::filesystem::path elf = link_rv32_example(variant);
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
-  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", kind, variant == "irq", elf.string());
+  hart = std::make_unique<firmware_targets::Rv32Hart>(
+      "hart", kind, variant == "irq" ? firmware_targets::IrqWiring::plic : firmware_targets::IrqWiring::hart, elf.string());
   // The instructions specular_shade takes for the row (issue 47: batches from a CPU).
   const auto nm = run_command("riscv64-unknown-elf-nm " + shell_quoted(elf), elf.parent_path(), "nm");
   const std::size_t at = nm.out.find(" T specular_shade\n");
@@ -49,6 +52,7 @@ TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
                                "specular_check_error: cause 2 (N out of range)"),
             std::string::npos);
   EXPECT_EQ(hart->faults, 1u);
+  EXPECT_EQ(hart->timer_interrupts, 0u) << "the watchdog fired";
   if (variant == "poll") {
     EXPECT_EQ(hart->interrupts, 0u);
   } else {
@@ -64,10 +68,10 @@ TEST_P(FirmwareExampleRv32, TheElfPassesItsOwnCheckOnAnRv32Hart) {
 // riscv-vp raises a store page fault (mcause 15) for a failed transaction, where the
 // specification's access fault is 7: the example's handler skips it just the same.
 TEST(FirmwareExampleRv32Faults, APageFaultAsRiscvVpRaisesItIsSkippedToo) {
-  const std::filesystem::path elf = link_example("poll");
+  const std::filesystem::path elf = link_rv32_example("poll");
   ASSERT_TRUE(std::filesystem::exists(elf));
   static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
-  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, false, elf.string());
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, firmware_targets::IrqWiring::hart, elf.string());
   hart->load_fault = 13u;
   hart->store_fault = 15u;
   sc_core::sc_start();

@@ -13,17 +13,32 @@
  *      in the interrupt builds).
  * Every result is compared with example_expected.h, which the host computed with Core
  * (the bit-accurate core) at build time; the first difference is named and ends the
- * program. Exit status: 0 all equal; 1-9 the driver's error (minus its code); 10 the
- * refusal not reported; 20 a result differs.
+ * program. Steps 3 and 4 wait under a watchdog: no STATUS.DONE (polled) or no done
+ * interrupt within EXAMPLE_WATCHDOG_TICKS of the CLINT's mtime prints a FAIL line naming
+ * what it waited on (the PLIC's source and context, or the hart's external interrupt)
+ * and exits. Exit status: 0 all equal; 1-9 the driver's error (minus its code); 10 the
+ * refusal not reported; 20 a result differs; 30 the watchdog fired; 40 an unexpected trap.
  *
- * Build options (-D):
+ * Build options (-D; examples/firmware_rv32/example_options.cmake checks them):
  *   SPECULAR_BASE=addr       the IP's base (default 0x50000000)
  *   EXAMPLE_WAIT_IRQ         the row waits by interrupt, through a PLIC (SiFive/FE310
  *                            layout): EXAMPLE_PLIC_BASE (default 0x0C000000),
- *                            EXAMPLE_PLIC_SOURCE (done_irq's source, default 1),
- *                            EXAMPLE_PLIC_CONTEXT (hart 0 machine mode: 0)
+ *                            EXAMPLE_PLIC_SOURCE (done_irq's source, 1..1023, default 1),
+ *                            EXAMPLE_PLIC_CONTEXT (default 0: hart 0 machine mode),
+ *                            EXAMPLE_PLIC_ENABLE_STRIDE, EXAMPLE_PLIC_CONTEXT_STRIDE (bytes
+ *                            per context of enable bits and of threshold/claim: SiFive's
+ *                            0x80 and 0x1000 by default; riscv-vp's FE310_PLIC packs them,
+ *                            docs/firmware.md)
  *   EXAMPLE_IRQ_DIRECT       with EXAMPLE_WAIT_IRQ: done_irq wired straight to the hart's
  *                            machine external interrupt, no PLIC
+ *   EXAMPLE_CLINT_BASE=addr  the CLINT (SiFive layout: mtimecmp of hart 0 at +0x4000,
+ *                            mtime at +0xBFF8) whose mtime bounds each wait and whose
+ *                            timer interrupt wakes a wfi that nothing else would (default
+ *                            0x02000000, riscv-vp's and FE310's)
+ *   EXAMPLE_WATCHDOG_TICKS=n the bound, in mtime ticks (default 65536: 65.5 ms of
+ *                            simulated time at riscv-vp's 1 MHz CLINT, 2 s at the
+ *                            32.768 kHz of FE310's and riscv-vp tiny32's); 0: no watchdog
+ *                            and no CLINT access
  *   EXAMPLE_UART_BASE=addr   the console is a byte-wide transmit register at addr
  *                            (default: the write system call, which riscv-vp's
  *                            --intercept-syscalls takes)
@@ -50,8 +65,34 @@
 #ifndef EXAMPLE_PLIC_CONTEXT
 #define EXAMPLE_PLIC_CONTEXT 0u
 #endif
+#ifndef EXAMPLE_PLIC_ENABLE_STRIDE
+#define EXAMPLE_PLIC_ENABLE_STRIDE 0x80u
+#endif
+#ifndef EXAMPLE_PLIC_CONTEXT_STRIDE
+#define EXAMPLE_PLIC_CONTEXT_STRIDE 0x1000u
+#endif
+#ifndef EXAMPLE_CLINT_BASE
+#define EXAMPLE_CLINT_BASE 0x02000000u
+#endif
+#ifndef EXAMPLE_WATCHDOG_TICKS
+#define EXAMPLE_WATCHDOG_TICKS 65536u
+#endif
+#if EXAMPLE_PLIC_SOURCE < 1 || EXAMPLE_PLIC_SOURCE > 1023
+#error "EXAMPLE_PLIC_SOURCE: a PLIC's sources are 1..1023"
+#endif
+#if EXAMPLE_PLIC_CONTEXT > 15871
+#error "EXAMPLE_PLIC_CONTEXT: a PLIC's contexts are 0..15871"
+#endif
+#if EXAMPLE_PLIC_ENABLE_STRIDE < 4 * (EXAMPLE_PLIC_SOURCE / 32 + 1) || EXAMPLE_PLIC_ENABLE_STRIDE > 0x80 || \
+    EXAMPLE_PLIC_ENABLE_STRIDE % 4 != 0
+#error "EXAMPLE_PLIC_ENABLE_STRIDE: 4 bytes per 32 sources (up to the source's word) .. 0x80, a multiple of 4"
+#endif
+#if EXAMPLE_PLIC_CONTEXT_STRIDE < 8 || EXAMPLE_PLIC_CONTEXT_STRIDE > 0x1000 || EXAMPLE_PLIC_CONTEXT_STRIDE % 4 != 0
+#error "EXAMPLE_PLIC_CONTEXT_STRIDE: 8 (threshold and claim) .. 0x1000, a multiple of 4"
+#endif
 
 #define MCAUSE_MACHINE_EXTERNAL 0x8000000Bu
+#define MCAUSE_MACHINE_TIMER 0x80000007u
 #define MCAUSE_LOAD_ACCESS_FAULT 5u
 #define MCAUSE_STORE_ACCESS_FAULT 7u
 #define MCAUSE_ECALL_FROM_M 11u
@@ -60,6 +101,8 @@
 
 #define EXIT_REFUSAL_NOT_REPORTED 10
 #define EXIT_RESULT_DIFFERS 20
+#define EXIT_WATCHDOG 30
+#define EXIT_UNEXPECTED_TRAP 40
 
 /* What the program leaves in RAM too (for a debugger or a memory dump). */
 volatile int32_t example_results[3u * EXAMPLE_PIXELS]; /* pins 24-26 of each pixel */
@@ -67,6 +110,7 @@ volatile int64_t example_reg9[2];                      /* register 9 after each 
 volatile int32_t example_status = 1;                   /* the exit status, once known */
 volatile uint32_t example_interrupts;                  /* done interrupts taken */
 volatile uint32_t example_spurious_interrupts;         /* ... and taken with STATUS.DONE clear */
+volatile uint32_t example_unclaimed_interrupts;        /* external ones the PLIC had no done_irq for */
 volatile uint32_t example_bus_faults;                  /* load/store faults skipped */
 volatile uint32_t example_last_fault_cause;            /* mcause of the last one */
 volatile uint32_t example_last_fault_address;          /* mtval of the last one */
@@ -79,7 +123,10 @@ const specular_bus* example_platform_bus(void);
 
 /* startup.S */
 void example_halt(void);
+void example_exit(int status);
 void example_interrupts_on(void);
+void example_timer_interrupt_on(void);
+void example_timer_interrupt_off(void);
 void example_sleep_unless(volatile uint32_t* flag);
 void example_console_write(const char* text, size_t length);
 
@@ -147,14 +194,126 @@ static int same(const char* what, int64_t index, const char* part, int64_t got, 
   return 0;
 }
 
+/* ---- the watchdog ---------------------------------------------------------------- */
+
+/* Each wait (steps 3 and 4) is bounded by the CLINT's mtime: polling checks it in the
+ * driver's idle hook; an interrupt wait also arms the CLINT's timer, because a wfi that
+ * no done interrupt ends would never return to check anything. An external interrupt
+ * that brings no done (the line reaching the hart but not the PLIC: re-entered for ever)
+ * checks it too, as it starves the timer's lower-priority interrupt. */
+#if EXAMPLE_WATCHDOG_TICKS != 0
+#define CLINT_MTIMECMP 0x4000u /* hart 0's; SiFive's layout, as FE310's and riscv-vp's */
+#define CLINT_MTIME 0xBFF8u
+
+static volatile uint32_t* clint(uint32_t offset) {
+  return (volatile uint32_t*)((uintptr_t)EXAMPLE_CLINT_BASE + offset);
+}
+
+static uint64_t mtime_now(void) {
+  uint32_t high, low;
+  do { /* the high word again: the low one may have wrapped between the two reads */
+    high = *clint(CLINT_MTIME + 4u);
+    low = *clint(CLINT_MTIME);
+  } while (high != *clint(CLINT_MTIME + 4u));
+  return (uint64_t)high << 32 | low;
+}
+
+#ifdef EXAMPLE_WAIT_IRQ
+/* The privileged specification's order for RV32: never below both the old and the new
+ * value in between. */
+static void mtimecmp_set(uint64_t at) {
+  *clint(CLINT_MTIMECMP) = 0xFFFFFFFFu;
+  *clint(CLINT_MTIMECMP + 4u) = (uint32_t)(at >> 32);
+  *clint(CLINT_MTIMECMP) = (uint32_t)at;
+}
+#endif
+
+static const char* watchdog_waits_for; /* NULL: disarmed */
+static uint64_t watchdog_deadline;
+
+static void watchdog_arm(const char* what) {
+  watchdog_deadline = mtime_now() + EXAMPLE_WATCHDOG_TICKS;
+  watchdog_waits_for = what;
+#ifdef EXAMPLE_WAIT_IRQ
+  mtimecmp_set(watchdog_deadline);
+  example_timer_interrupt_on();
+#endif
+}
+
+static void watchdog_disarm(void) {
+#ifdef EXAMPLE_WAIT_IRQ
+  example_timer_interrupt_off();
+  mtimecmp_set(~(uint64_t)0);
+#endif
+  watchdog_waits_for = NULL;
+}
+
+/* Names what was waited for, on which wiring, and what came instead; then exits. */
+static void watchdog_fire(void) {
+  say("FAIL: no ");
+  say(watchdog_waits_for);
+  say(" within ");
+  say_signed(EXAMPLE_WATCHDOG_TICKS);
+  say(" mtime ticks (");
+  if (dev.wait_mode == SPECULAR_WAIT_POLL) {
+    say("polling STATUS of the IP at ");
+    say_hex((uint32_t)SPECULAR_BASE);
+  } else {
+#if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
+    say("waited on source ");
+    say_signed(EXAMPLE_PLIC_SOURCE);
+    say(" of the PLIC at ");
+    say_hex((uint32_t)EXAMPLE_PLIC_BASE);
+    say(", context ");
+    say_signed(EXAMPLE_PLIC_CONTEXT);
+    if (example_unclaimed_interrupts == 0u) {
+      say("; no external interrupt came: done_irq on another source, or the context or the PLIC's strides not "
+          "the platform's?");
+    } else {
+      say("; ");
+      say_signed(example_unclaimed_interrupts);
+      say(" external interrupts had nothing to claim: done_irq wired straight to the hart? that is the "
+          "irq_direct build");
+    }
+#else
+    say("waited on the machine external interrupt, done_irq straight to the hart; ");
+    if (example_spurious_interrupts == 0u) {
+      say("none came: done_irq wired to a PLIC? that is the irq build");
+    } else {
+      say_signed(example_spurious_interrupts);
+      say(" came with STATUS.DONE clear");
+    }
+#endif
+  }
+  say(")\n");
+  example_status = EXIT_WATCHDOG;
+  example_exit(EXIT_WATCHDOG);
+}
+
+static void watchdog_check(void) {
+  if (watchdog_waits_for != NULL && mtime_now() >= watchdog_deadline) watchdog_fire();
+}
+
+/* The driver's idle hook while it polls. */
+static void poll_under_watchdog(void* context) {
+  (void)context;
+  watchdog_check();
+}
+#else
+static void watchdog_arm(const char* what) { (void)what; }
+static void watchdog_disarm(void) {}
+static void watchdog_check(void) {}
+#endif
+
 /* ---- interrupts ----------------------------------------------------------------- */
 
 #if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
-/* The PLIC's registers (SiFive's layout, as FE310's and riscv-vp's PLIC): offsets. */
+/* The PLIC's registers: offsets (SiFive's layout; the per-context strides are options,
+ * riscv-vp's FE310_PLIC packs its contexts closer). */
 #define PLIC_PRIORITY (4u * EXAMPLE_PLIC_SOURCE)
-#define PLIC_ENABLE (0x2000u + 0x80u * EXAMPLE_PLIC_CONTEXT + 4u * (EXAMPLE_PLIC_SOURCE / 32u))
-#define PLIC_THRESHOLD (0x200000u + 0x1000u * EXAMPLE_PLIC_CONTEXT)
-#define PLIC_CLAIM (0x200004u + 0x1000u * EXAMPLE_PLIC_CONTEXT) /* read: claim; write: complete */
+#define PLIC_ENABLE (0x2000u + EXAMPLE_PLIC_ENABLE_STRIDE * EXAMPLE_PLIC_CONTEXT + 4u * (EXAMPLE_PLIC_SOURCE / 32u))
+#define PLIC_THRESHOLD (0x200000u + EXAMPLE_PLIC_CONTEXT_STRIDE * EXAMPLE_PLIC_CONTEXT)
+#define PLIC_CLAIM (PLIC_THRESHOLD + 4u) /* read: claim; write: complete */
 
 /* Volatile loads and stores, or the platform's accessors (the host test's PLIC model). */
 static uint32_t plic_read(uint32_t offset) {
@@ -196,6 +355,7 @@ void example_plic_on(void) {
  * masked, in example_sleep_unless). */
 static void sleep_until_interrupt(void* context) {
   (void)context; /* the platform's, if it gave accessors */
+  watchdog_check();
   example_sleep_unless(&dev.irq_pending);
 }
 #endif
@@ -207,6 +367,7 @@ static void sleep_until_interrupt(void* context) {
 static void done_interrupt(void) {
   if ((specular_read(&dev, SPECULAR_STATUS_OFFSET) & SPECULAR_STATUS_DONE_MASK) == 0u) {
     ++example_spurious_interrupts;
+    watchdog_check(); /* one that keeps coming starves the timer's interrupt */
     return;
   }
   ++example_interrupts;
@@ -216,11 +377,30 @@ static void done_interrupt(void) {
 static void external_interrupt(void) {
 #if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
   const uint32_t id = plic_read(PLIC_CLAIM);
-  if (id == EXAMPLE_PLIC_SOURCE) done_interrupt();
+  if (id == EXAMPLE_PLIC_SOURCE) {
+    done_interrupt();
+  } else {
+    ++example_unclaimed_interrupts; /* nothing (0) or another source: not done_irq's */
+    watchdog_check();
+  }
   if (id != 0u) plic_write(PLIC_CLAIM, id); /* complete: the gateway takes the source again */
 #else
   done_interrupt(); /* the level falls with the acknowledging store */
 #endif
+}
+
+/* What sits at a faulting address the example itself uses, for the unexpected-trap line. */
+static const char* fault_hint(uintptr_t address) {
+#if defined(EXAMPLE_WAIT_IRQ) && !defined(EXAMPLE_IRQ_DIRECT)
+  if (address - (uintptr_t)EXAMPLE_PLIC_BASE < 0x4000000u)
+    return " (no PLIC at EXAMPLE_PLIC_BASE? with done_irq straight to the hart, that is the irq_direct build)";
+#endif
+#if EXAMPLE_WATCHDOG_TICKS != 0
+  if (address - (uintptr_t)EXAMPLE_CLINT_BASE < 0x10000u)
+    return " (no CLINT at EXAMPLE_CLINT_BASE for the watchdog? set it, or EXAMPLE_WATCHDOG_TICKS=0 for none)";
+#endif
+  (void)address;
+  return "";
 }
 
 /* The length of the instruction at `address`: 2 for a compressed one (low bits not 11). */
@@ -235,6 +415,12 @@ uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval) {
     case MCAUSE_MACHINE_EXTERNAL:
       external_interrupt();
       return mepc;
+#if EXAMPLE_WATCHDOG_TICKS != 0
+    case MCAUSE_MACHINE_TIMER: /* only the watchdog enables it */
+      if (watchdog_waits_for == NULL) break;
+      watchdog_fire();
+      return mepc;
+#endif
     case MCAUSE_LOAD_ACCESS_FAULT:
     case MCAUSE_STORE_ACCESS_FAULT:
     case MCAUSE_LOAD_PAGE_FAULT:
@@ -258,8 +444,10 @@ uintptr_t example_trap(uintptr_t mcause, uintptr_t mepc, uintptr_t mtval) {
   say_hex((uint32_t)mepc);
   say(", mtval ");
   say_hex((uint32_t)mtval);
+  say(fault_hint(mtval));
   say("\n");
-  example_halt();
+  example_status = EXIT_UNEXPECTED_TRAP;
+  example_exit(EXIT_UNEXPECTED_TRAP);
   return mepc;
 }
 
@@ -284,6 +472,9 @@ static int run(void) {
   status = specular_init(&dev, (uintptr_t)SPECULAR_BASE, NULL); /* volatile accesses, polling */
 #endif
   if (status != SPECULAR_OK) return driver_failed("specular_init", status);
+#if EXAMPLE_WATCHDOG_TICKS != 0
+  if (dev.bus.idle == NULL) dev.bus.idle = poll_under_watchdog;
+#endif
 
   /* A refused access: N = 1001 written raw (the driver's own calls check it first). */
   specular_write(&dev, SPECULAR_N_OFFSET, SPECULAR_N_MAX + 1u);
@@ -308,7 +499,9 @@ static int run(void) {
   say_hex(dev.error_address);
   say("\n");
 
+  watchdog_arm("STATUS.DONE");
   status = specular_compute(&dev, &one, &result);
+  watchdog_disarm();
   if (status != SPECULAR_OK) return driver_failed("specular_compute", status);
   example_reg9[0] = result.reg9_pass1;
   example_reg9[1] = result.reg9_pass2;
@@ -325,10 +518,14 @@ static int run(void) {
   example_plic_on();
 #endif
   dev.wait_mode = SPECULAR_WAIT_IRQ;
-  dev.poll_limit = 0u; /* wfi wakes on the interrupt: no need to count */
+  dev.poll_limit = 0u; /* wfi wakes on the interrupt (or the watchdog's timer): no need to count */
+  watchdog_arm("done_irq interrupt");
   example_interrupts_on();
+#else
+  watchdog_arm("STATUS.DONE");
 #endif
   status = specular_shade(&dev, EXAMPLE_ROW_N, row_rgb, row_cos, EXAMPLE_PIXELS, out);
+  watchdog_disarm();
   if (status != SPECULAR_OK) return driver_failed("specular_shade", status);
   for (i = 0; i < 3u * EXAMPLE_PIXELS; ++i) {
     example_results[i] = out[i];

@@ -1,12 +1,12 @@
 /* startup.S: the reset path of the bare-metal RV32 example, and its trap entry.
  * _start sets gp and sp, points mtvec at trap_entry, clears .bss, calls main, then exits
- * with main's value through the exit system call (ecall with a7 = 93, a0 = status: what
- * riscv-vp's tiny32 takes with --intercept-syscalls, and newlib/picolibc's number on
- * RISC-V). On a platform that does not take the call, the ecall traps, example_trap
- * skips it and the program halts in wfi. The console is the write system call (a7 = 64,
- * fd 1), taken the same way; a weak symbol, so that a build with a UART replaces it. The
- * CSR helpers the interrupt-driven build uses are here too, so that main.c stays plain
- * C99. */
+ * with main's value through the exit system call (example_exit: ecall with a7 = 93,
+ * a0 = status: what riscv-vp's tiny32 takes with --intercept-syscalls, and
+ * newlib/picolibc's number on RISC-V). On a platform that does not take the call, the
+ * ecall traps, example_trap skips it and the program halts in wfi. The console is the
+ * write system call (a7 = 64, fd 1), taken the same way; a weak symbol, so that a build
+ * with a UART replaces it. The CSR helpers the interrupt-driven build and the watchdog
+ * use are here too, so that main.c stays plain C99. */
   .option push
   .option arch, +zicsr  /* newer binutils name no CSR instruction under rv32imac alone */
 
@@ -29,9 +29,14 @@ _start:
   j 1b
 2:
   call main
+  /* fall through to the exit call */
+
+/* void example_exit(int status): the exit system call; halts if the platform does not
+ * take it (the ecall came back). main's return, the watchdog and unexpected traps. */
+  .globl example_exit
+example_exit:
   li a7, 93
   ecall
-  /* fall through if the ecall came back */
   .globl example_halt
 example_halt:
   csrci mstatus, 8
@@ -101,6 +106,19 @@ example_interrupts_on:
   li t0, 0x800
   csrs mie, t0
   csrsi mstatus, 8
+  ret
+
+/* void example_timer_interrupt_on(void), _off(void): the machine timer interrupt
+ * (mie.MTIE), which the watchdog's CLINT compare raises. */
+  .globl example_timer_interrupt_on
+example_timer_interrupt_on:
+  li t0, 0x80
+  csrs mie, t0
+  ret
+  .globl example_timer_interrupt_off
+example_timer_interrupt_off:
+  li t0, 0x80
+  csrc mie, t0
   ret
 
 /* void example_sleep_unless(volatile uint32_t* flag): wfi unless *flag is set, with

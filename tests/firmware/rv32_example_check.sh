@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Checks the bare-metal example's ELF (firmware_rv32_example_elf links it): a 32-bit
 # RISC-V executable, soft-float ilp32, entered at 0x0 (riscv-vp tiny32's RAM start) by
-# _start, holding main, the trap handler, the driver's entry points and the results'
-# symbols in RAM.
+# _start, holding main, the trap handler, the exit call (main's return, the watchdog and
+# unexpected traps end there), the driver's entry points and the results' symbols in RAM.
 # Usage: rv32_example_check.sh ELF [poll|irq|irq_direct]
 set -euo pipefail
 elf=${1:?usage: rv32_example_check.sh ELF [poll|irq|irq_direct]}
@@ -19,7 +19,7 @@ grep -Eq 'Type:[[:space:]]+EXEC' <<<"$header" || fail "not an executable"
 grep -Eq 'Entry point address:[[:space:]]+0x0$' <<<"$header" || fail "entry is not 0x0"
 grep -Eq 'Flags:.*soft-float ABI' <<<"$header" || fail "not the ilp32 (soft-float) ABI"
 symbols=$("$nm" "$elf")
-for symbol in _start main example_trap specular_init specular_compute specular_shade specular_irq_handler \
+for symbol in _start main example_trap example_exit specular_init specular_compute specular_shade specular_irq_handler \
               example_results example_status example_console_write example_bus_faults; do
   grep -Eq "^[0-9a-f]+ [A-Za-z] $symbol\$" <<<"$symbols" || fail "symbol $symbol missing"
 done

@@ -38,6 +38,7 @@ extern volatile std::uint32_t example_bus_faults;
 // The platform's (startup.S on the hart)
 void example_console_write(const char* text, std::size_t length);
 void example_halt(void);
+void example_exit(int status);
 void example_interrupts_on(void);
 void example_sleep_unless(volatile std::uint32_t* flag);
 const specular_bus* example_platform_bus(void);
@@ -192,6 +193,10 @@ void example_console_write(const char* text, std::size_t length) {
 void example_halt(void) {
   specular::example_host::hart->halted = true;
   specular::example_host::hart->park();
+}
+void example_exit(int status) {  // the watchdog (off here) and unexpected traps
+  specular::example_host::hart->exit_status = status;
+  example_halt();
 }
 void example_interrupts_on(void) { specular::example_host::hart->interrupts_on = true; }
 void example_sleep_unless(volatile std::uint32_t* flag) { specular::example_host::hart->sleep_unless(flag); }

@@ -1,13 +1,19 @@
 // A small RV32IMC machine-mode hart with Zicsr, for running the bare-metal example's ELF
 // (examples/firmware_rv32) against a TLM target (issue 47): what riscv-vp's tiny32 does
 // for it, no more. RAM at 0 (32 MiB); the IP's window at 0x5000_0000 through a socket at
-// the hart's local time under a quantum keeper (10 ns per instruction, 1 us quantum); an
-// optional PLIC (plic_model.h) at 0x0C00_0000; done_irq straight to the machine external
-// interrupt otherwise. An error response is a load or store access fault (mcause 5 or 7,
-// mtval the address), as an ISS takes it; so is an access outside the map. ecall with
-// a7 = 64 (write) and 93 (exit) is taken as riscv-vp's --intercept-syscalls takes it. wfi
-// syncs and sleeps until an enabled interrupt is pending. No A, F or D extension, no
-// privilege below M, no misaligned access: the example uses none.
+// the hart's local time under a quantum keeper (10 ns per instruction, 1 us quantum); a
+// CLINT at 0x0200_0000 as riscv-vp's (SiFive's layout: hart 0's mtimecmp at +0x4000,
+// mtime at +0xBFF8, mtime counting microseconds of simulated time, the hart's local time
+// included; mtime >= mtimecmp raises the machine timer interrupt); done_irq through a PLIC
+// (plic_model.h) at 0x0C00_0000, or straight to the machine external interrupt with no
+// PLIC on the bus, or straight to the hart beside a PLIC that done_irq does not reach (the
+// wiring the PLIC build must not hang on). An error response is a load or store access
+// fault (mcause 5 or 7, mtval the address), as an ISS takes it; so is an access outside
+// the map. ecall with a7 = 64 (write) and 93 (exit) is taken as riscv-vp's
+// --intercept-syscalls takes it. wfi syncs and sleeps until an enabled interrupt is
+// pending (the timer's at mtimecmp). Interrupts are taken in the specification's order
+// (external before timer). No A, F or D extension, no privilege below M, no misaligned
+// access: the example uses none.
 #ifndef SPECULAR_TESTS_SUPPORT_RV32_HART_H
 #define SPECULAR_TESTS_SUPPORT_RV32_HART_H
 
@@ -30,19 +36,29 @@
 namespace specular {
 namespace firmware_targets {
 
+/// Where done_irq goes.
+enum class IrqWiring {
+  hart,             ///< straight to the machine external interrupt; no PLIC on the bus
+  plic,             ///< through the PLIC (its edge gateway), whose output is the external interrupt
+  hart_beside_plic  ///< straight to the hart; a PLIC on the bus with nothing on its source
+};
+
 struct Rv32Hart : sc_core::sc_module {
   static constexpr std::uint32_t ram_size = 32u << 20, ip_base = 0x50000000u, ip_size = 0x8000u;
+  static constexpr std::uint32_t clint_base = 0x02000000u, clint_size = 0x10000u;
   tlm_utils::simple_initiator_socket<Rv32Hart, 32> socket{"socket"};
   tlm_utils::tlm_quantumkeeper keeper;
   std::unique_ptr<SpecularTarget> target;
   std::vector<std::uint8_t> ram = std::vector<std::uint8_t>(ram_size);
   std::uint32_t x[32] = {}, pc = 0;
   std::uint32_t mstatus = 0, mie = 0, mtvec = 0, mepc = 0, mcause = 0, mtval = 0, mscratch = 0;
-  bool with_plic = false, line = false, exited = false, stuck = false;
+  IrqWiring irq_wiring = IrqWiring::hart;
+  bool line = false, exited = false, stuck = false;
+  std::uint64_t mtimecmp = ~std::uint64_t(0);  // reset value unspecified; here: never
   int exit_code = -1;
   std::string console, error;
   std::uint64_t instructions = 0, limit = 1000000;  // the example takes about 7 000
-  std::size_t faults = 0, interrupts = 0;
+  std::size_t faults = 0, interrupts = 0, timer_interrupts = 0;
   /// The causes a refused load and store raise: the access faults (5, 7), or riscv-vp's
   /// page faults (13, 15; what the issue saw on it).
   std::uint32_t load_fault = 5u, store_fault = 7u;
@@ -53,14 +69,14 @@ struct Rv32Hart : sc_core::sc_module {
   std::uint64_t probe_started = 0, probe_instructions = 0;
 
   /// `wiring`: how the socket reaches the target (firmware_targets.h; empty: straight).
-  Rv32Hart(sc_core::sc_module_name name, Kind kind, bool plic_wired, const std::string& elf,
+  Rv32Hart(sc_core::sc_module_name name, Kind kind, IrqWiring irq_wiring_, const std::string& elf,
            const Wiring& wiring = {})
-      : sc_module(name), with_plic(plic_wired) {
+      : sc_module(name), irq_wiring(irq_wiring_) {
     SPECULAR_HAS_PROCESS(Rv32Hart);
     target = make_target("ip", kind, Config{});
     wire(socket, *target, wiring);
     target->on_done_irq([this](bool level) {
-      if (level && !line && with_plic) plic.pending = true;  // the gateway's edge
+      if (level && !line && irq_wiring == IrqWiring::plic) plic.pending = true;  // the gateway's edge
       line = level;
       irq_event.notify();
     });
@@ -101,9 +117,13 @@ struct Rv32Hart : sc_core::sc_module {
       }
       return true;
     }
-    if (with_plic && address >= Plic::base && address < Plic::base + Plic::size && size == 4) {
+    if (irq_wiring != IrqWiring::hart && address >= Plic::base && address < Plic::base + Plic::size && size == 4) {
       plic.access(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND, address - Plic::base, &value,
                   (mstatus & 8u) != 0u);
+      return true;
+    }
+    if (address >= clint_base && address - clint_base < clint_size && size == 4) {
+      clint_access(write, address - clint_base, value);
       return true;
     }
     if (address < ip_base || address - ip_base >= ip_size) return false;
@@ -132,8 +152,39 @@ struct Rv32Hart : sc_core::sc_module {
     mstatus = (mstatus & ~0x88u) | ((mstatus & 8u) << 4);  // MPIE = MIE, MIE = 0 (MPP stays M)
     pc = mtvec & ~3u;
   }
-  bool external_pending() const { return with_plic ? plic.interrupt() : line; }
-  std::uint32_t mip() const { return external_pending() ? 0x800u : 0u; }
+  bool external_pending() const { return irq_wiring == IrqWiring::plic ? plic.interrupt() : line; }
+  std::uint32_t mip() const { return (external_pending() ? 0x800u : 0u) | (mtime() >= mtimecmp ? 0x80u : 0u); }
+
+  // ---- the CLINT --------------------------------------------------------------------
+  /// Microseconds of simulated time at the hart's local time (riscv-vp's CLINT: 1 MHz).
+  std::uint64_t mtime() const {
+    return (sc_core::sc_time_stamp() + keeper.get_local_time()).value() / sc_core::sc_time(1, sc_core::SC_US).value();
+  }
+  /// mtimecmp's words are writable, mtime's read-only; msip and the rest read 0.
+  void clint_access(bool write, std::uint32_t offset, std::uint32_t& value) {
+    const std::uint64_t now = mtime();
+    const std::uint64_t low = 0xFFFFFFFFull;
+    switch (offset) {
+      case 0x4000:
+        if (write) mtimecmp = (mtimecmp & ~low) | value;
+        else value = std::uint32_t(mtimecmp);
+        return;
+      case 0x4004:
+        if (write) mtimecmp = (mtimecmp & low) | std::uint64_t(value) << 32;
+        else value = std::uint32_t(mtimecmp >> 32);
+        return;
+      case 0xBFF8: if (!write) value = std::uint32_t(now); return;
+      case 0xBFFC: if (!write) value = std::uint32_t(now >> 32); return;
+      default: if (!write) value = 0u;
+    }
+  }
+  /// Simulated time until mtime reaches mtimecmp (zero if it has).
+  sc_core::sc_time until_timer() const {
+    const sc_core::sc_time now = sc_core::sc_time_stamp() + keeper.get_local_time();
+    const double at_us = static_cast<double>(mtimecmp);
+    const sc_core::sc_time at = sc_core::sc_time(at_us, sc_core::SC_US);
+    return at > now ? at - now : sc_core::SC_ZERO_TIME;
+  }
 
   std::uint32_t& csr(std::uint32_t number, bool& ok) {
     static std::uint32_t zero;
@@ -243,8 +294,13 @@ struct Rv32Hart : sc_core::sc_module {
   /// Runs one instruction (or takes one interrupt); false when the program stopped.
   bool step() {
     if ((mstatus & 8u) && (mie & mip())) {
-      ++interrupts;
-      trap(0x8000000Bu, 0, pc);
+      if (mie & mip() & 0x800u) {  // external before timer, as the specification orders them
+        ++interrupts;
+        trap(0x8000000Bu, 0, pc);
+      } else {
+        ++timer_interrupts;
+        trap(0x80000007u, 0, pc);
+      }
       return true;
     }
     keeper.inc(sc_core::sc_time(10, sc_core::SC_NS));
@@ -382,7 +438,10 @@ struct Rv32Hart : sc_core::sc_module {
           }
           if (i == 0x10500073u) {  // wfi
             keeper.sync();
-            while (!(mie & mip())) sc_core::wait(irq_event);
+            while (!(mie & mip())) {
+              if ((mie & 0x80u) && mtimecmp != ~std::uint64_t(0)) sc_core::wait(until_timer(), irq_event);
+              else sc_core::wait(irq_event);  // nothing to wake it: the simulation ends
+            }
             break;
           }
           return fail("system instruction " + std::to_string(i));

@@ -1,9 +1,8 @@
-// The bare-metal example's ELF (examples/firmware_rv32) linked at test time into the
-// test's own folder, with the expected bits of this build, as tests/firmware/CMakeLists.txt
-// links it (issue 47); for the tests that run it on tests/support/rv32_hart.h. The
-// including program defines SPECULAR_SOURCE_DIR and SPECULAR_EXAMPLE_EXPECTED_DIR.
-#ifndef SPECULAR_TESTS_SUPPORT_FIRMWARE_EXAMPLE_ELF_H
-#define SPECULAR_TESTS_SUPPORT_FIRMWARE_EXAMPLE_ELF_H
+// The bare-metal example (examples/firmware_rv32) linked to an RV32 ELF as ctest's
+// firmware_rv32_example_elf_* links it, into the test's scratch folder, for the RV32 hart
+// tests (tests/test_firmware_example_rv32*.cpp). Needs SPECULAR_SOURCE_DIR and
+// SPECULAR_EXAMPLE_EXPECTED_DIR (tests/CMakeLists.txt defines them).
+#pragma once
 
 #include <gtest/gtest.h>
 
@@ -17,9 +16,9 @@
 namespace specular {
 namespace testing_support {
 
-/// Links the example's `variant` (poll, irq: through a PLIC, irq_direct: done_irq to the
-/// hart); returns the ELF's path (a failed link is a test failure, and no file).
-inline std::filesystem::path link_example(const std::string& variant) {
+/// Links the example's `variant` (poll, irq, irq_direct) with `extra` more compiler
+/// arguments (e.g. " -DEXAMPLE_WATCHDOG_TICKS=1000u"); returns the ELF's path.
+inline std::filesystem::path link_rv32_example(const std::string& variant, const std::string& extra = "") {
   const std::filesystem::path dir = scratch_subdir("elf");
   const std::string source = SPECULAR_SOURCE_DIR, example = source + "/examples/firmware_rv32";
   std::string defines;
@@ -30,7 +29,7 @@ inline std::filesystem::path link_example(const std::string& variant) {
       "riscv64-unknown-elf-gcc -march=rv32imac -mabi=ilp32 --specs=picolibc.specs -std=c99 -Wall -Wextra"
       " -Wpedantic -Werror -ffreestanding -Os -nostartfiles -Wl,--no-warn-rwx-segments -T " +
           shell_quoted(example + "/link.ld") + " -I" + shell_quoted(source + "/firmware/include") + " -I" +
-          shell_quoted(example) + " -I" + shell_quoted(SPECULAR_EXAMPLE_EXPECTED_DIR) + defines + " " +
+          shell_quoted(example) + " -I" + shell_quoted(SPECULAR_EXAMPLE_EXPECTED_DIR) + defines + extra + " " +
           shell_quoted(example + "/startup.S") + " " + shell_quoted(example + "/main.c") + " " +
           shell_quoted(source + "/firmware/src/specular_driver.c") + " -o " + shell_quoted(elf.string()),
       dir, "link");
@@ -41,5 +40,3 @@ inline std::filesystem::path link_example(const std::string& variant) {
 
 }  // namespace testing_support
 }  // namespace specular
-
-#endif  // SPECULAR_TESTS_SUPPORT_FIRMWARE_EXAMPLE_ELF_H

@@ -1,6 +1,7 @@
 # The docs as a site (docs/conf.py): Doxygen's XML of the installed headers, then Sphinx
-# with warnings as errors (-W --keep-going), nitpicky (-n). The target docs_site and the
-# test docs_site run it (docs/site/CMakeLists.txt).
+# with warnings as errors (-W --keep-going), nitpicky (-n), reading pages on every core
+# (-j auto: 55 s instead of 85 s on 2 busy cores). The target docs_site and the test
+# docs_site run it (docs/site/CMakeLists.txt, tests/CMakeLists.txt).
 #   cmake -DSOURCE_DIR=<repository> -DDOXYFILE=<build>/docs/api/Doxyfile -DDOXYGEN=<doxygen>
 #         -DPYTHON=/usr/bin/python3 -DOUT=<html folder> -DWORK=<xml, doctrees>
 #         [-DFRESH=1] -P build_site.cmake
@@ -61,7 +62,7 @@ if(NOT status EQUAL 0)
 endif()
 
 execute_process(COMMAND ${CMAKE_COMMAND} -E env "SPECULAR_DOXYGEN_XML=${WORK}/xml"
-                        "${PYTHON}" -m sphinx -W --keep-going -n -q -b html
+                        "${PYTHON}" -m sphinx -W --keep-going -n -q -j auto -b html
                         -d "${WORK}/doctrees" "${SOURCE_DIR}/docs" "${OUT}"
                 RESULT_VARIABLE status)
 if(NOT status EQUAL 0)

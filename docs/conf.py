@@ -1,9 +1,9 @@
 # The docs as a site (issue 62): Sphinx reads the same Markdown GitHub shows, through
 # MyST; the navigation by reader is index.md's toctrees; the API reference comes from
 # Doxygen's XML through breathe (api/reference.md). Build it with the target docs_site
-# (it runs the target docs first) or by hand, with Debian's python:
-#   SPECULAR_DOXYGEN_XML=build/docs/api/xml /usr/bin/python3 -m sphinx -W --keep-going -n \
-#       -b html docs build/docs/site
+# (which runs Doxygen for the XML first: site/build_site.cmake) or, after it, by hand with
+# Debian's python:
+#   /usr/bin/python3 -m sphinx -W --keep-going -n -b html docs build/docs/site
 # Packages: python3-sphinx python3-myst-parser python3-breathe furo (scripts/setup.sh).
 import os
 import sys
@@ -37,14 +37,15 @@ myst_heading_anchors = 6
 # download; a link to a file that exists nowhere still fails the build.
 repo_links_root = repository
 
-# The API reference: the XML the target docs writes (build/docs/api/xml). docs_site
-# passes its path; built by hand, the default is the usual build folder.
+# The API reference: Doxygen's XML of the installed headers, which site/build_site.cmake
+# writes (docs/api's Doxyfile with what breathe needs) and passes here; built by hand
+# after the target docs_site, the default is the usual build folder's.
 doxygen_xml = os.environ.get("SPECULAR_DOXYGEN_XML",
-                             os.path.join(repository, "build", "docs", "api", "xml"))
+                             os.path.join(repository, "build", "docs", "site_work", "xml"))
 if not os.path.isfile(os.path.join(doxygen_xml, "index.xml")):
     sys.exit(f"docs/conf.py: no Doxygen XML in {doxygen_xml} (index.xml): build the "
-             "target docs first (cmake --build build --target docs), or set "
-             "SPECULAR_DOXYGEN_XML to its xml folder")
+             "target docs_site (cmake --build build --target docs_site), which writes it, "
+             "or set SPECULAR_DOXYGEN_XML to an xml folder")
 breathe_projects = {"specular": doxygen_xml}
 breathe_default_project = "specular"
 breathe_domain_by_extension = {"h": "cpp"}
@@ -52,15 +53,13 @@ breathe_domain_by_extension = {"h": "cpp"}
 html_theme = "furo"
 html_static_path = []
 html_show_sourcelink = False
-html_copy_source = False
-# Offline: no fonts or scripts from the network (furo needs none).
-html_last_updated_fmt = None
+html_copy_source = False  # the search lists pages by title (no source text to fetch)
 
 # Nitpicky (-n): every reference must resolve, except to what the reference does not
 # document: SystemC, TLM, the C and C++ libraries, Verilator's generated classes, and the
 # types private to a class (SpecularTarget's Attempt and Why, the twins' Engine).
 nitpick_ignore_regex = [
-    ("cpp:identifier", r"(sc_core|sc_dt|tlm|tlm_utils|std|Verilated\w*|V\w+)(::.*)?"),
+    ("cpp:identifier", r"(sc_core|sc_dt|tlm|tlm_utils|std|Verilated)(::.*)?"),
     ("cpp:identifier", r"(std::)?u?int\d+_t|u?intptr_t|size_t|FILE"),
     ("cpp:identifier", r"Attempt|Why|Engine|AxiIpModel"),
 ]

@@ -59,6 +59,8 @@ PACKAGES=(
   clang
   zlib1g-dev  # the twin's FST writer (Verilator --trace-fst) links zlib; the package's find_dependency(ZLIB) (issue 35)
   doxygen  # the API reference of the installed headers: target docs, test api_reference_complete (docs/api/README.md)
+  python3-sphinx python3-myst-parser python3-breathe furo  # the docs as a site (Sphinx, the Markdown, the API reference, the theme): target docs_site, test docs_site (docs/conf.py)
+  chromium python3-pil  # test docs_site_screenshots: the site's pages rendered headless, the pictures checked not blank, the search run
 )
 # gtkwave: the viewer; xvfb, xauth: a virtual X server for tests/test_vcd_waveform.cpp,
 # which runs GTKWave headless (xvfb-run) with waveforms/specular.gtkw.

@@ -47,8 +47,9 @@ junit="$PWD/$build/sanitize-junit.xml"
 rm -f "$junit"
 ctest_args=(--test-dir "$build" --output-on-failure -j"$jobs" --output-junit "$junit")
 # The rtl-labelled tests run Verilog tools (Verilator's lint, Icarus, Yosys) on the
-# Verilog sources: nothing of ours for the sanitizers to watch, and run by test.sh.
-if [ "$all" -eq 0 ]; then ctest_args+=(-LE "long|rtl"); else ctest_args+=(-LE rtl); fi
+# Verilog sources, the docs-labelled ones Sphinx, Chromium and link checks on the
+# Markdown: nothing of ours for the sanitizers to watch, and run by test.sh.
+if [ "$all" -eq 0 ]; then ctest_args+=(-LE "long|rtl|docs"); else ctest_args+=(-LE "rtl|docs"); fi
 echo "+ ctest ${ctest_args[*]}"
 # The tests' launcher (scripts/sanitizer_env.sh) sets the sanitizer options; the
 # exports here cover anything ctest starts without it.

@@ -89,6 +89,18 @@ if [[ $rtl == ON ]]; then
   verilator --lint-only -Wall --top-module specular_ip_axi "$installed_rtl"/ip/*.v \
     "$installed_rtl"/device/*.v "$installed_rtl"/primitives/*.v ||
     { echo "consumer_check: FAIL: Verilator cannot read specular_ip_axi from the installed Verilog" >&2; exit 1; }
+  # The integrator's example (issue 60): the SoC with the IP at 0x4000_0000, and Yosys
+  # reading it with its ROM images from another folder (rtl/ reads from the prefix; the
+  # assertion checker specular_ip_axi_props.v is Yosys's with -formal only: left out).
+  verilator --lint-only -Wall --top-module specular_soc "$installed_rtl"/soc/*.v "$installed_rtl"/ip/*.v \
+    "$installed_rtl"/device/*.v "$installed_rtl"/primitives/*.v ||
+    { echo "consumer_check: FAIL: Verilator cannot read specular_soc from the installed Verilog" >&2; exit 1; }
+  (cd "$work" && yosys -q -p "read_verilog $(echo "$installed_rtl"/soc/*.v "$installed_rtl"/ip/specular_reg_block.v \
+      "$installed_rtl"/ip/specular_ip_axi.v \
+      "$installed_rtl"/device/*.v "$installed_rtl"/primitives/*.v); hierarchy -check -top specular_soc; proc; memory -nomap" \
+      > "$work/yosys_soc.log" 2>&1) && ! grep -q "Can not open file" "$work/yosys_soc.log" ||
+    { cat "$work/yosys_soc.log" >&2
+      echo "consumer_check: FAIL: Yosys cannot read specular_soc and its ROM images from the installed Verilog" >&2; exit 1; }
 fi
 
 # The SystemC BUILD was built with, as the package records it (cmake/SpecularSystemC.cmake):

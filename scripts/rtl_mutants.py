@@ -108,7 +108,10 @@ def read_design(target):
             " ".join([os.path.join(RTL, "device", "specular_device_sync.v")] + neighbours), module_file(target))
     else:
         reads = "read_verilog -DSPECULAR_ROM_WORDS_FROM_HOST -defer %s\n" % " ".join(DEVICE_SOURCES)
-    return reads + "hierarchy -top %s\nproc\nflatten\nopt_clean\nhierarchy -top %s\n" % (target, target)
+    # The AXI top at ADDR_WIDTH 32, as its testbench (specular_ip_axi_tb.v) instantiates it:
+    # the mutant is written at the parameters it is elaborated with.
+    chparam = " -chparam ADDR_WIDTH 32" if target == "specular_ip_axi" else ""
+    return reads + "hierarchy -top %s%s\nproc\nflatten\nopt_clean\nhierarchy -top %s\n" % (target, chparam, target)
 
 
 def portable(mutation):

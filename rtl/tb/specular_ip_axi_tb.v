@@ -8,7 +8,9 @@
 //     out, read-only, byte strobes, sub-word writes to a window, the range checks,
 //     CONTROL's reserved bits) with STATUS.CAUSE and ERROR_ADDRESS, the operands kept,
 //     W1C and sub-word merges;
-//   - a read and a write issued together, and STATUS.BUSY read while an operation runs.
+//   - corner operations at cos code 1 (n = 1..10, 1000): REG9_PASS1 = 1 + 16n, ROM38_K;
+//   - a read and a write issued together, and STATUS.BUSY read while an operation runs;
+//     a read issued while the previous R waits.
 // The AXI4-Lite rules are checked on every edge (specular_ip_axi_props.v). Stops with
 // $fatal on the first mismatch. The master's tasks are axi_lite_master.vh's, the vectors'
 // reader specular_vectors.vh's (both in this folder: iverilog -I).
@@ -152,6 +154,31 @@ module specular_ip_axi_tb;
       write(STATUS, 32'h2, OKAY);  // W1C: done_irq falls
       @(posedge aclk);
       #1 if (done_irq !== 1'b0) $fatal(1, "MISMATCH done_irq still high after W1C of DONE");
+    end
+  endtask
+
+  // Corner operations the random draws almost never reach, each at cos code 1 = 2^-16:
+  // log2 cos = -16 exactly, so register 9 after pass 1 = a - n*log2 cos = 1 + 16n (a = 1.0),
+  // exact in S14.22. n = 1..10: ROM 38's largest words (bank 0 words 2 and 5..10 have
+  // K's bit 15, 2^-1 in U9.16, set; the vectors draw n <= 10 once in 300); n = 1000:
+  // register 9 = 16001, its bit 35 (2^13) set (the vectors' largest is below 2^13).
+  task check_corners;
+    integer k, n;
+    reg [36:0] pass1;
+    begin
+      for (k = 1; k <= 11; k = k + 1) begin
+        n = k == 11 ? 1000 : k;
+        pass1 = (37'd1 + 37'd16 * n) << 22;
+        write(N, n, OKAY);
+        write(COS, 32'd1, OKAY);
+        write(CONTROL, 32'h1, OKAY);
+        wait_irq;
+        expect_read(REG1, 32'd1, OKAY);
+        expect_read(REG9_PASS1_LO, pass1[31:0], OKAY);
+        expect_read(REG9_PASS1_LO + 4, {27'd0, pass1[36:32]}, OKAY);
+        expect_read(ROM38_K, {7'd0, rom38_table[n]}, OKAY);
+        write(STATUS, 32'h2, OKAY);
+      end
     end
   endtask
 
@@ -355,6 +382,38 @@ module specular_ip_axi_tb;
     end
   endtask
 
+  // A read issued while the previous one's R waits (RREADY low): AXI4-Lite lets the master
+  // present the next AR at once; the slave holds one read (ARREADY low while RVALID), so
+  // the waiting R keeps the first read's data and the second read is taken after it.
+  task check_read_behind_r;
+    begin
+      write(N, 32'd513, OKAY);
+      write(R, 32'd200, OKAY);
+      araddr = N;
+      arvalid = 1'b1;
+      @(posedge aclk);
+      while (!arready) @(posedge aclk);
+      #1 araddr = R;                        // the next AR at once: ARVALID stays high
+      repeat (4) @(posedge aclk);           // the first R waits
+      #1 if (rvalid !== 1'b1 || arready !== 1'b0 || rdata !== 32'd513 || rresp !== OKAY)
+        $fatal(1, "MISMATCH a read behind a waiting R: RVALID %b ARREADY %b RDATA 0x%08h RRESP %b, expected 1 0 0x00000201 00",
+               rvalid, arready, rdata, rresp);
+      rready = 1'b1;
+      @(posedge aclk);                      // the first R taken
+      #1 rready = 1'b0;
+      @(posedge aclk);
+      while (!arready) @(posedge aclk);     // the second AR taken
+      #1 arvalid = 1'b0;
+      araddr = 32'hDEAD_BEEF;
+      rready = 1'b1;
+      @(posedge aclk);
+      while (!rvalid) @(posedge aclk);
+      if (rdata !== 32'd200 || rresp !== OKAY)
+        $fatal(1, "MISMATCH the read behind a waiting R: 0x%08h response %b, expected 0x000000c8 00", rdata, rresp);
+      #1 rready = 1'b0;
+    end
+  endtask
+
   // A channel that never answers is a failure, not a hang (a mutant's READY or VALID stuck
   // at 0): a run takes about 230 cycles per operation with stalls, misuse included; the
   // limit is several times that.
@@ -372,8 +431,10 @@ module specular_ip_axi_tb;
     reset_release;
     check_reset_values;
     for (i = 0; i < count; i = i + 1) run_vector(i, i % 3 == 2);
+    check_corners;
     check_misuse;
     check_concurrency;
+    check_read_behind_r;
     $display("specular_ip_axi_tb: PASS (%0d operations, STALL %0d)", count, STALL);
     $finish;
   end

@@ -57,7 +57,7 @@ fi
 (cd "$work/prefix" && find . -type f | sort) >"$work/files.txt"
 sed -n '1,5s/^/   /p' "$work/files.txt"
 echo "   ... $(wc -l <"$work/files.txt") files"
-unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit(Firmware)?/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/([a-z_]+/[a-z0-9_]+\.(v|vh)|[a-z0-9_]+\.hex)|firmware/specular_driver\.c|firmware_rv32/(CMakeLists\.txt|[a-z_]+\.(c|h|S|ld))|toolchains/[a-z0-9-]+\.cmake))$' \
+unexpected=$(grep -Ev '^\./(include/specular/.*\.h|lib[^/]*/libspecular(_core|_twin|_rtl_models)?\.a|lib[^/]*/cmake/SpecularUnit(Firmware)?/[^/]+\.cmake|share/SpecularUnit/(ip/[a-z0-9_.]+\.(xml|rdl)|rtl/[a-z_]+/[a-z0-9_]+\.(v|vh|hex)|firmware/specular_driver\.c|firmware_rv32/(CMakeLists\.txt|example_options\.cmake|[a-z_]+\.(c|h|S|ld))|toolchains/[a-z0-9-]+\.cmake))$' \
              "$work/files.txt" || true)
 if [[ -n "$unexpected" ]]; then
   echo "consumer_check: FAIL: the install holds more than the IP:" >&2

@@ -24,25 +24,9 @@ module specular_soc_replay_tb;
   parameter SHOWN = 20;  // mismatches printed in full
 
   `include "axi_lite_master.vh"
-  wire done_irq;
+  localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
+  `include "specular_soc_dut.vh"
 
-  specular_soc #(.IP_BASE(IP_BASE), .RAM_BASE(RAM_BASE), .RAM_BYTES(RAM_BYTES),
-                 .ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
-    .aclk(aclk), .aresetn(aresetn),
-    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
-    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
-    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
-    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
-    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
-    .done_irq(done_irq));
-
-  specular_ip_axi_props soc_port (
-    .aclk(aclk), .aresetn(aresetn),
-    .awvalid(awvalid), .awready(awready), .awaddr(awaddr),
-    .wvalid(wvalid), .wready(wready), .wdata(wdata), .wstrb(wstrb),
-    .bvalid(bvalid), .bready(bready), .bresp(bresp),
-    .arvalid(arvalid), .arready(arready), .araddr(araddr),
-    .rvalid(rvalid), .rready(rready), .rdata(rdata), .rresp(rresp));
 
   integer accesses = 0, reads_compared = 0, mismatches = 0;
   task mismatch;

@@ -13,6 +13,9 @@ against OUT_DIR's and exits 1 on a difference).
                  the tool
   train_walk     low activity: cos random walks with steps of 2^0 to 2^12 codes, n and
                  R, G, B held over runs of 25-60 operations
+  train_lobes    the lobe lit: cos random walks (steps of 2^0 to 2^10 codes) from cos^n
+                 uniform on (0.05, 1), n log-uniform on 1-300, n and R, G, B held over runs
+                 of 20-50 operations (non-zero results that change a little at a time)
   train_changes  one kind of change at a time: the same operation repeated, cos only, n
                  only, R, G, B only (all or one channel), cos 0 and 1
   test_random    random operands of another seed (specular_variant_vectors --seed 2, its
@@ -66,6 +69,20 @@ def walk(rng, count):
             if len(out) == count:
                 break
             c = max(0, min(ONE, c + rng.choice((-1, 1)) * (1 << rng.randint(0, 12))))
+            out.append(line(c, n, *rgb))
+    return out
+
+
+def lobe_walk(rng, count):
+    out = []
+    while len(out) < count:
+        n = int(round(math.exp(rng.uniform(0.0, math.log(300.0)))))
+        rgb = [rng.randint(0, 255) for _ in range(3)]
+        c = code(rng.uniform(0.05, 1.0) ** (1.0 / n))
+        for _ in range(rng.randint(20, 50)):
+            if len(out) == count:
+                break
+            c = max(0, min(ONE, c + rng.choice((-1, 1)) * (1 << rng.randint(0, 10))))
             out.append(line(c, n, *rgb))
     return out
 
@@ -133,6 +150,7 @@ def streams(tool):
         "train_common": from_tool(tool, 1, 318, 0),
         "train_walk": walk(random.Random(61), 250),
         "train_changes": changes(random.Random(62), 250),
+        "train_lobes": lobe_walk(random.Random(63), 250),
         "test_random": from_tool(tool, 2, 318, 18),
         "test_sphere": sphere(),
         "test_sweep": sweep(),

@@ -16,6 +16,8 @@ against OUT_DIR's and exits 1 on a difference).
   train_lobes    the lobe lit: cos random walks (steps of 2^0 to 2^10 codes) from cos^n
                  uniform on (0.05, 1), n log-uniform on 1-300, n and R, G, B held over runs
                  of 20-50 operations (non-zero results that change a little at a time)
+  train_cos      cos only: n (log-uniform on 1-1000) and R, G, B held over runs of 30-60
+                 operations, cos uniform or p^(1/n) for p uniform (half each)
   train_changes  one kind of change at a time: the same operation repeated, cos only, n
                  only, R, G, B only (all or one channel), cos 0 and 1
   test_random    random operands of another seed (specular_variant_vectors --seed 2, its
@@ -87,6 +89,19 @@ def lobe_walk(rng, count):
     return out
 
 
+def cos_jumps(rng, count):
+    out = []
+    while len(out) < count:
+        n = int(round(math.exp(rng.uniform(0.0, math.log(1000.0)))))
+        rgb = [rng.randint(0, 255) for _ in range(3)]
+        for _ in range(rng.randint(30, 60)):
+            if len(out) == count:
+                break
+            c = rng.randint(0, ONE) if rng.random() < 0.5 else code(rng.random() ** (1.0 / n))
+            out.append(line(c, n, *rgb))
+    return out
+
+
 def changes(rng, count):
     out = []
     c, n, rgb = rng.randint(0, ONE), rng.randint(1, 1000), [rng.randint(0, 255) for _ in range(3)]
@@ -151,6 +166,7 @@ def streams(tool):
         "train_walk": walk(random.Random(61), 250),
         "train_changes": changes(random.Random(62), 250),
         "train_lobes": lobe_walk(random.Random(63), 250),
+        "train_cos": cos_jumps(random.Random(64), 250),
         "test_random": from_tool(tool, 2, 318, 18),
         "test_sphere": sphere(),
         "test_sweep": sweep(),

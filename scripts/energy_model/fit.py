@@ -70,6 +70,20 @@ WHY = {
     "prev_end_mul6_activity": "the previous operation's pass 2 written, multiplier 6",
     "prev_end_mul39_activity": "the same, multiplier 39",
     "prev_end_mul_rgb_activity": "the same, multipliers 13-15",
+    "idle_rom5_read": "Fig. 2 between operations: register 1 on ROM 5's bus, so a new cos is a read before pass 1",
+    "idle_log2": "the same, the log2 unit",
+    "idle_mul6": "the same, multiplier 6 (on n)",
+    "idle_mul6_activity": "the same, multiplier 6's partial products that move",
+    "return_rom5_read": "Fig. 2's select 36 falling after pass 2: ROM 5's bus back from register 9 to register 1, a read",
+    "return_log2": "the same, the log2 unit",
+    "return_mul6": "the same, multiplier 6 (back to n)",
+    "return_mul6_activity": "the same, multiplier 6's partial products that move",
+    "prev_return_rom5_read": "the previous operation's return, where the replay's interval holds it",
+    "prev_return_log2": "the same, the log2 unit",
+    "prev_return_mul6": "the same, multiplier 6",
+    "prev_return_mul6_activity": "the same, multiplier 6's partial products that move",
+    "ones_norm39": "the result's ones on multiplier 39's output: a lit lobe keeps its fan-out high",
+    "ones_out": "the ones on pins 24-26",
 }
 
 
@@ -347,10 +361,13 @@ def main():
                   f"standard deviation {d['train_sd_pj']:.0f} pJ; the fit's residual RMS {d['train_rms_pj']:.0f} pJ.", "",
                   "| feature | pJ per unit | mean per operation | share of the mean energy | why it costs |",
                   "|---|---:|---:|---:|---|"]
-            for i, n in enumerate(feature_names):
-                c, m = d["coefficients"][i], d["train_feature_means"][i]
-                r.append(f"| {n} | {c:.2f} | {m:.2f} | {100 * c * m / d['train_mean_pj']:.1f} % | {WHY.get(n, '')} |")
-            r.append("")
+            order = sorted(range(nf), key=lambda i: -d["coefficients"][i] * d["train_feature_means"][i])
+            for i in order:
+                c, m, n = d["coefficients"][i], d["train_feature_means"][i], feature_names[i]
+                if c > 0:
+                    r.append(f"| {n} | {c:.2f} | {m:.2f} | {100 * c * m / d['train_mean_pj']:.1f} % | {WHY.get(n, '')} |")
+            zero = [feature_names[i] for i in range(nf) if d["coefficients"][i] <= 0]
+            r += ["", f"Held at 0 by the fit ({len(zero)} of {nf}): {', '.join(zero)}.", ""]
         r += ["### Accuracy on the streams", "",
               "| device | stream | operations | gate level (pJ) | model (pJ) | mean error | per-operation RMS error (pJ) | worst (pJ) | gate-level s.d. (pJ) |",
               "|---|---|---:|---:|---:|---:|---:|---:|---:|"]

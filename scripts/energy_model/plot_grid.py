@@ -46,7 +46,7 @@ def main():
             fig.colorbar(im, ax=ax, label="nJ per result")
     fig.suptitle("Energy of one operation after the reference operation (cos 0.5, n 32), same colour")
     fig.tight_layout()
-    fig.savefig(sys.argv[2])
+    fig.savefig(sys.argv[2], dpi=80)
     return 0
 
 

@@ -55,6 +55,8 @@ const std::array<const char*, feature_count> feature_names = {
     "prev_return_log2",
     "prev_return_mul6",
     "prev_return_mul6_activity",
+    "ones_norm39",           // the result's ones: multiplier 39's product K·A
+    "ones_out",              //   and pins 24-26 (the lit part of a lobe holds them high)
 };
 
 namespace {
@@ -223,6 +225,8 @@ Features operation_features(const Formats& f, const RegisterState& before, const
       activity(log_a, n_a, log2[1], mux4[1], f.log2.width(), f.mux4.width()),
       ret[0], ret[1], ret[2], ret[3],
       prev_ret[0], prev_ret[1], prev_ret[2], prev_ret[3],
+      ones(rb.norm39, f.norm.width()),
+      ones(rb.out[0], f.out.width()) + ones(rb.out[1], f.out.width()) + ones(rb.out[2], f.out.width()),
   };
 }
 

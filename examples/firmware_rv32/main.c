@@ -1,7 +1,7 @@
 /* A bare-metal RV32 program that shades pixels with the specular IP through the C driver
  * (firmware/include/specular/specular_driver.h) and checks every result itself, for a
  * riscv-vp-like platform with the IP's 32 KiB window at SPECULAR_BASE (docs/firmware.md,
- * docs/integration.md section 10).
+ * docs/integration/riscv_vp.md).
  *
  * What it does, in order, reporting each step on the console (example_console_write):
  *   1. binds the driver (ID, VERSION, CONFIG);
@@ -363,7 +363,7 @@ static void sleep_until_interrupt(void* context) {
 /* A done interrupt counts only while STATUS.DONE is set. One with DONE clear is spurious:
  * an edge a decoupled platform delivers late (at the CPU's next sync), from an operation
  * already polled and acknowledged, or a line still high at mret under a long quantum
- * (docs/integration.md section 10). */
+ * (docs/integration/riscv_vp.md). */
 static void done_interrupt(void) {
   if ((specular_read(&dev, SPECULAR_STATUS_OFFSET) & SPECULAR_STATUS_DONE_MASK) == 0u) {
     ++example_spurious_interrupts;

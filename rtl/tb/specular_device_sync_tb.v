@@ -1,7 +1,7 @@
 // Self-checking Icarus testbench of the synchronous variant (specular_device_sync):
 // replays the vectors that `specular_tb --format csv` wrote (the hex columns: register
 // 1, register 9 after each pass, pins 24-26) through pins 17-35 with the variant's
-// protocol (docs/rtl.md, "The synchronous variant"), as specular_device_tb.v does for
+// protocol (docs/rtl/sync.md, "The synchronous variant"), as specular_device_tb.v does for
 // the drawn device:
 //   - start (27), pin 17, and (when n, R, G, B change) pins 18, 21-23 with their loads
 //     30-33 are set a quarter period before the start edge (a rising clock edge) and

@@ -19,8 +19,12 @@ const std::array<const char*, feature_count> feature_names = {
 
 namespace {
 
+// The helpers are inlined into operation_features, so that its POPCNT clone uses the
+// instruction for them too.
+#define SPECULAR_ENERGY_INLINE inline __attribute__((always_inline))
+
 /// Bits that differ between two codes on a bus of `width` bits.
-double toggles(code_t a, code_t b, int width) {
+SPECULAR_ENERGY_INLINE double toggles(code_t a, code_t b, int width) {
   const std::uint64_t mask = width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1;
   return static_cast<double>(__builtin_popcountll((static_cast<std::uint64_t>(a) ^ static_cast<std::uint64_t>(b)) & mask));
 }
@@ -28,7 +32,7 @@ double toggles(code_t a, code_t b, int width) {
 /// ROM 5's address for a multiplexer-3 code: the exponent (the leading one's place)
 /// and the mantissa bits after it, as Rom5Table::lookup forms them; a code ≤ 0 reads
 /// the table's zero entry.
-std::uint64_t rom5_address(const Formats& f, code_t bus) {
+SPECULAR_ENERGY_INLINE std::uint64_t rom5_address(const Formats& f, code_t bus) {
   if (bus <= 0) return 0;
   const int bits = f.widths.rom5_addr_bits;
   const arith::LeadingOne one = arith::leading_one(static_cast<std::uint64_t>(bus), 64);
@@ -39,7 +43,7 @@ std::uint64_t rom5_address(const Formats& f, code_t bus) {
 /// ROM 5's address bits that change as its bus takes `bus` in turn: after the previous
 /// operation register 9 (pass 2) sits on it, then pass 1's register 1, pass 2's
 /// register 9, and register 9's new value once pass 2 is latched.
-double rom5_toggles(const Formats& f, const std::array<code_t, 4>& bus) {
+SPECULAR_ENERGY_INLINE double rom5_toggles(const Formats& f, const std::array<code_t, 4>& bus) {
   const int bits = f.widths.rom5_addr_bits + 7;  // the mantissa and the exponent
   double sum = 0;
   for (std::size_t i = 1; i < bus.size(); ++i)
@@ -49,6 +53,11 @@ double rom5_toggles(const Formats& f, const std::array<code_t, 4>& bus) {
 
 }  // namespace
 
+// Hardware POPCNT where the CPU has it (every x86-64 since 2008), chosen once at load
+// time: libgcc's portable popcount costs more than the rest of an operation's features.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+__attribute__((target_clones("popcnt", "default")))
+#endif
 Features operation_features(const Formats& f, const RegisterState& before, const RegisterState& after) {
   const Operands& a = before.in;
   const Operands& b = after.in;

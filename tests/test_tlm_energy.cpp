@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "specular/tlm/energy_counter.h"
 #include "support/tlm_bench.h"
 
 namespace {
@@ -183,6 +184,66 @@ TEST(TlmEnergy, TheWindowsAddUpToTheTally) {
   });
   EXPECT_EQ(tally.operations, 50u);
   EXPECT_NEAR(windows_pj, tally.total_pj(), 1e-6 * tally.total_pj());
+}
+
+// The platform's energy counter (specular/tlm/energy_counter.h): the tally at the read's
+// annotated time, low word first; everything else refused with its response.
+struct CounterTop : sc_core::sc_module {
+  SpecularLtTarget ip{"ip"};
+  SpecularEnergyCounter counter{"counter", ip};
+  tlm_utils::simple_initiator_socket<CounterTop, 32> to_ip{"to_ip"}, to_counter{"to_counter"};
+  tlm_utils::tlm_quantumkeeper keeper;
+  SpecularDriver driver{to_ip, 0, keeper};
+  std::vector<std::pair<std::uint64_t, tlm::tlm_response_status>> reads;  // value, response
+  energy::EnergyTally at_read;
+  explicit CounterTop(sc_core::sc_module_name name) : sc_module(name) {
+    SPECULAR_HAS_PROCESS(CounterTop);
+    to_ip.bind(ip.socket);
+    to_counter.bind(counter.socket);
+    SC_THREAD(run);
+  }
+  tlm::tlm_response_status access(tlm::tlm_command command, std::uint64_t address, unsigned length,
+                                  std::uint32_t& word) {
+    tlm::tlm_generic_payload tx;
+    tx.set_command(command);
+    tx.set_address(address);
+    tx.set_data_ptr(reinterpret_cast<unsigned char*>(&word));
+    tx.set_data_length(length);
+    tx.set_streaming_width(length);
+    sc_time delay = sc_core::SC_ZERO_TIME;
+    to_counter->b_transport(tx, delay);
+    return tx.get_response_status();
+  }
+  void run() {
+    for (const Operands& op : random_operands(30, 5)) driver.compute(op);
+    keeper.sync();
+    at_read = ip.energy();
+    std::uint32_t lo = 0, hi = 0, ops_lo = 0, ops_hi = 0, w = 7;
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, energy_counter::energy_pj_lo, 4, lo)});
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, energy_counter::energy_pj_hi, 4, hi)});
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, energy_counter::operations_lo, 4, ops_lo)});
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, energy_counter::operations_hi, 4, ops_hi)});
+    reads[0].first = (std::uint64_t{hi} << 32) | lo;
+    reads[2].first = (std::uint64_t{ops_hi} << 32) | ops_lo;
+    reads.push_back({0, access(tlm::TLM_WRITE_COMMAND, energy_counter::energy_pj_lo, 4, w)});
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, energy_counter::size, 4, w)});
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, 2, 4, w)});
+    reads.push_back({0, access(tlm::TLM_READ_COMMAND, 0, 2, w)});
+    sc_core::sc_stop();
+  }
+};
+
+TEST(TlmEnergy, TheCounterReadsTheTallyAndRefusesTheRest) {
+  static CounterTop top("top");  // alive until exit, as SystemC wants
+  sc_core::sc_start();
+  ASSERT_EQ(top.reads.size(), 8u);
+  for (int i = 0; i < 4; ++i) EXPECT_EQ(top.reads[static_cast<std::size_t>(i)].second, tlm::TLM_OK_RESPONSE) << i;
+  EXPECT_EQ(top.reads[0].first, static_cast<std::uint64_t>(std::llround(top.at_read.total_pj())));
+  EXPECT_EQ(top.reads[2].first, 30u);
+  EXPECT_EQ(top.reads[4].second, tlm::TLM_COMMAND_ERROR_RESPONSE);
+  EXPECT_EQ(top.reads[5].second, tlm::TLM_ADDRESS_ERROR_RESPONSE);
+  EXPECT_EQ(top.reads[6].second, tlm::TLM_ADDRESS_ERROR_RESPONSE);
+  EXPECT_EQ(top.reads[7].second, tlm::TLM_BURST_ERROR_RESPONSE);
 }
 
 TEST(TlmEnergy, OffCountsNothing) {

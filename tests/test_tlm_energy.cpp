@@ -1,7 +1,7 @@
 // The TLM targets' energy model and power trace (issue 61, docs/energy.md), checked
 // against the gate-level figures measured by the energy flow, written here as the docs
-// give them (docs/rtl_ip.md "Silicon cost": specular_ip_axi's idle clock 147 pJ, a
-// register read 313 pJ over its 2 clocks, a write 493 pJ over its 3;
+// give them (docs/rtl_ip/mutants_silicon.md "Silicon cost": specular_ip_axi's idle
+// clock 147 pJ, a register read 313 pJ over its 2 clocks, a write 493 pJ over its 3;
 // docs/design_space/energy_per_result.md: 4 789 pJ per result for the synchronous
 // device, 5 094 pJ for the drawn one, over random operands with n uniform and cos^n
 // uniform), not read from the model's tables.

@@ -5,7 +5,7 @@
 ///
 /// This first version is the mean-only model: each device's mean energy per result over
 /// the common stream's random operands (docs/design_space/energy_per_result.md), every
-/// other coefficient 0; the bus figures of docs/rtl_ip.md, "Silicon cost".
+/// other coefficient 0; the bus figures of docs/rtl_ip/mutants_silicon.md, "Silicon cost".
 #pragma once
 
 #include "specular/energy/operation_features.h"

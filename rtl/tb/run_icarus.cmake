@@ -105,8 +105,9 @@ if(SATURATION STREQUAL "literal")
 else()
   set(literal 0)
 endif()
+get_filename_component(tb_dir ${TESTBENCH} DIRECTORY)  # its includes: specular_device_bench.vh, ...
 execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/device_tb.vvp -s ${TB_TOP}
+  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/device_tb.vvp -s ${TB_TOP} -I${tb_dir}
           "-P${TB_TOP}.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
           "-P${TB_TOP}.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
           "-P${TB_TOP}.VECTORS=\"${SCRATCH}/vectors.csv\""

@@ -146,44 +146,9 @@ module specular_ip_axi_gate_tb;
   endtask
 
   // ---- vectors (specular_tb --format csv: Core's bits, as specular_ip_axi_tb.v reads them) ----
-  integer v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1], v_b [0:MAX_VECTORS-1];
-  reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
-             v_out26 [0:MAX_VECTORS-1];
-  reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
-  integer count;
-  task read_vectors;
-    integer fd, fields, n, r, g, b, pass;
-    real cos, skip;
-    reg [63:0] h1, h2, h3, h4, h5, h6;
-    reg [8*2048-1:0] header;
-    begin
-      fd = $fopen(VECTORS, "r");
-      if (fd == 0) $fatal(1, "specular_ip_axi_gate_tb: cannot read %0s", VECTORS);
-      fields = $fgets(header, fd);
-      count = 0;
-      fields = 25;
-      while (!$feof(fd) && fields == 25) begin
-        fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
-                              "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
-                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
-                         skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
-        if (fields == 25) begin
-          if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_gate_tb: more than %0d vectors", MAX_VECTORS);
-          v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
-          v_reg1[count] = h1[31:0];
-          // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
-          v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
-          v_pass2[count] = {{27{h3[36]}}, h3[36:0]};
-          v_out24[count] = h4[31:0]; v_out25[count] = h5[31:0]; v_out26[count] = h6[31:0];
-          count = count + 1;
-        end else if (fields > 0) begin
-          $fatal(1, "specular_ip_axi_gate_tb: %0s line %0d: %0d of 25 fields", VECTORS, count + 2, fields);
-        end
-      end
-      $fclose(fd);
-      if (count == 0) $fatal(1, "specular_ip_axi_gate_tb: no vectors in %0s", VECTORS);
-    end
-  endtask
+  localparam TB_NAME = "specular_ip_axi_gate_tb";
+  localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
+  `include "specular_vectors.vh"  // read_vectors: VECTORS into v_*[0:count-1]
 
   // ---- the three kinds of access ----
   task operation;

@@ -67,6 +67,8 @@ module specular_ip_axi_tb;
     end
   endtask
 
+  localparam TB_NAME = "specular_ip_axi_tb";
+  localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
   `include "specular_vectors.vh"  // read_vectors: VECTORS into v_*[0:count-1]
   // ROM 38's table as specular_romgen writes it from the C++ tables (rtl_rom_contents
   // checks the image against them): ROM38_K after an operation is word n of bank 0

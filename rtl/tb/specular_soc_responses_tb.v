@@ -26,6 +26,8 @@ module specular_soc_responses_tb;
   parameter SEED = 1;
 
   `include "axi_lite_master.vh"
+  localparam TB_NAME = "specular_soc_responses_tb";
+  localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
   `include "specular_vectors.vh"
   localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
   `include "specular_soc_dut.vh"

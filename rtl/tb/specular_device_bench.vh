@@ -2,8 +2,8 @@
 // device; specular_device_sync_tb.v, the synchronous variant) share: the pins, the clock,
 // the vectors, the monitors that check every result, and the driver's schedule. `include
 // it inside the bench module, after
-//   - its parameters VECTORS, PINS_IMAGE, LITERAL, CONSTANTS, NORMALISATION, T,
-//     RESET_EVERY, MAX_VECTORS, EDGE_TOLERANCE;
+//   - its parameters (specular_policy_parameters.vh's and T, RESET_EVERY, MAX_VECTORS,
+//     EDGE_TOLERANCE);
 //   - its localparams TB_NAME (its messages begin with it), the widths COS_FRAC, N_BITS,
 //     RGB_BITS, COS_W, MUX4_W, REG9_W, ROM38_W, NORM_W, OUT_W, ROM38_BANK_BITS, and its
 //     protocol's timing in periods after the start edge: SELECT36_AT (select 36 rises;
@@ -25,6 +25,9 @@
   // ties them (codes written by specular_romgen from constants.cpp).
   reg  [63:0]                 pin_codes [0:5];
   initial $readmemh(PINS_IMAGE, pin_codes);
+`ifdef GATE_LEVEL
+  initial $sdf_annotate(`SDF_FILE, dut);  // the mapped netlist's delays
+`endif
   wire [MUX4_W-1:0]           pin19_h = pin_codes[2 * CONSTANTS][MUX4_W-1:0];
   wire [REG9_W-1:0]           pin20_a = pin_codes[2 * CONSTANTS + 1][REG9_W-1:0];
   reg  [RGB_BITS-1:0]         pin21_r = 0, pin22_g = 0, pin23_b = 0;

@@ -24,12 +24,7 @@
 `timescale 1ns / 1ps
 
 module specular_device_sync_tb;
-  parameter VECTORS = "vectors.csv";
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter PINS_IMAGE = "pins.hex";  // pins 19, 20 per constants policy (specular_romgen)
-  parameter LITERAL = 0;        // 1: Saturation::literal
-  parameter CONSTANTS = 0;      // Constants enum value: pins 19, 20 and ROM 38's bank
-  parameter NORMALISATION = 0;  // Normalisation enum value: ROM 38's bank
+  `include "specular_policy_parameters.vh"  // VECTORS, ROM images, PINS_IMAGE, the policy
   parameter real T = 10.0;      // clock period (ns)
   parameter RESET_EVERY = 17;
   parameter MAX_VECTORS = 8192;
@@ -57,7 +52,6 @@ module specular_device_sync_tb;
 `ifdef GATE_LEVEL
   // The mapped netlist (scripts/silicon.sh --top specular_device_sync) with the SDF
   // delays; its ROM macros read their images themselves.
-  initial $sdf_annotate(`SDF_FILE, dut);
   specular_device_sync dut (
 `else
   specular_device_sync #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (

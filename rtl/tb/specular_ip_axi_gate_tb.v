@@ -32,12 +32,7 @@
 `timescale 1ns / 1ps
 
 module specular_ip_axi_gate_tb;
-  parameter VECTORS = "vectors.csv";
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter PINS_IMAGE = "pins.hex";  // gatesim.sh passes it to every device top: unused
-  parameter LITERAL = 0;
-  parameter CONSTANTS = 0;
-  parameter NORMALISATION = 0;
+  `include "specular_policy_parameters.vh"  // PINS_IMAGE unused; the policy 0/0/0 only
   parameter real T = 20.0;            // clock period (ns)
   parameter MODE = 3;
   parameter ACCESSES = 60;
@@ -68,13 +63,8 @@ module specular_ip_axi_gate_tb;
 `else
   specular_ip_axi #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
 `endif
-    .aclk(aclk), .aresetn(aresetn),
-    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
-    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
-    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
-    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
-    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
-    .done_irq(done_irq));
+    `include "axi_lite_slave_ports.vh"
+  );
 
   // ---- the master: one access at a time, on the SDC's timing ----
   // sample: the outputs just before the rising edge (the caller is at a falling edge)

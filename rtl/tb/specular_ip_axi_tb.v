@@ -30,21 +30,12 @@ module specular_ip_axi_tb;
   // ADDR_WIDTH 32, as the TLM `axi` target verilates it: the refusals above the map
   // (0x8000 and up, 0xDEADBEEF) reach the IP and are its to answer.
   specular_ip_axi #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE), .ADDR_WIDTH(32)) dut (
-    .aclk(aclk), .aresetn(aresetn),
-    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
-    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
-    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
-    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
-    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
-    .done_irq(done_irq));
+    `include "axi_lite_slave_ports.vh"
+  );
 
   specular_ip_axi_props props (
-    .aclk(aclk), .aresetn(aresetn),
-    .awvalid(awvalid), .awready(awready), .awaddr(awaddr),
-    .wvalid(wvalid), .wready(wready), .wdata(wdata), .wstrb(wstrb),
-    .bvalid(bvalid), .bready(bready), .bresp(bresp),
-    .arvalid(arvalid), .arready(arready), .araddr(araddr),
-    .rvalid(rvalid), .rready(rready), .rdata(rdata), .rresp(rresp));
+    `include "axi_lite_check_ports.vh"
+  );
 
   localparam [31:0] STATUS = 32'h00C, CONTROL = 32'h010, ERROR_ADDRESS = 32'h018;
   localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;

@@ -19,10 +19,6 @@
 `timescale 1ns / 1ps
 
 module specular_soc_outstanding_tb;
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter [31:0] IP_BASE = 32'h4000_0000;
-  parameter [31:0] RAM_BASE = 32'h0000_0000;
-  parameter RAM_BYTES = 65536;
   parameter SEED = 1;
   parameter PHASES = 120;
   parameter MAX_IN_FLIGHT = 6;     // the interconnect takes 4 per direction: more wait
@@ -45,13 +41,7 @@ module specular_soc_outstanding_tb;
     .bvalid(dut.bvalid[0]), .bready(dut.bready[0]), .bresp(dut.bresp[1:0]),
     .arvalid(dut.arvalid[0]), .arready(dut.arready[0]), .araddr(dut.araddr[31:0]),
     .rvalid(dut.rvalid[0]), .rready(dut.rready[0]), .rdata(dut.rdata[31:0]), .rresp(dut.rresp[1:0]));
-  specular_ip_axi_props ip_port (
-    .aclk(aclk), .aresetn(aresetn),
-    .awvalid(dut.awvalid[1]), .awready(dut.awready[1]), .awaddr({17'd0, dut.awaddr[46:32]}),
-    .wvalid(dut.wvalid[1]), .wready(dut.wready[1]), .wdata(dut.wdata[63:32]), .wstrb(dut.wstrb[7:4]),
-    .bvalid(dut.bvalid[1]), .bready(dut.bready[1]), .bresp(dut.bresp[3:2]),
-    .arvalid(dut.arvalid[1]), .arready(dut.arready[1]), .araddr({17'd0, dut.araddr[46:32]}),
-    .rvalid(dut.rvalid[1]), .rready(dut.rready[1]), .rdata(dut.rdata[63:32]), .rresp(dut.rresp[3:2]));
+  `include "specular_soc_ip_port.vh"
 
   // ---- the locations the program touches ----
   localparam K_RAM = 0, K_OPERAND = 1, K_CONST = 2, K_HOLE = 3, K_NONE = 4, K_CONTROL = 5;

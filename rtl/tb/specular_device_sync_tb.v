@@ -24,14 +24,9 @@
 `timescale 1ns / 1ps
 
 module specular_device_sync_tb;
-  `include "specular_policy_parameters.vh"  // VECTORS, ROM images, PINS_IMAGE, the policy
-  parameter real T = 10.0;      // clock period (ns)
-  parameter RESET_EVERY = 17;
-  parameter MAX_VECTORS = 8192;
-  // Gate level (scripts/gatesim.sh, `define GATE_LEVEL): select 36 and 35 change a
-  // clock-to-Q delay after the clock edge, so their time is checked to EDGE_TOLERANCE
-  // periods (0: exactly).
-  parameter real EDGE_TOLERANCE = 0.0;
+  `include "specular_device_parameters.vh"  // VECTORS, ROM images, the policy, T, ...
+  // (Gate level: select 36 and 35 change a clock-to-Q delay after the clock edge,
+  // within EDGE_TOLERANCE.)
 
   // Default widths (docs/design.md), as specular_tb uses them.
   localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 8;

@@ -25,14 +25,9 @@
 `timescale 1ns / 1ps
 
 module specular_device_tb;
-  `include "specular_policy_parameters.vh"  // VECTORS, ROM images, PINS_IMAGE, the policy
-  parameter real T = 10.0;      // clock period (ns)
-  parameter RESET_EVERY = 17;
-  parameter MAX_VECTORS = 8192;
-  // Gate level (scripts/gatesim.sh, `define GATE_LEVEL): 35's edges come a gate delay
-  // after the clock's, so their time is checked to EDGE_TOLERANCE periods (0: exactly),
-  // and the control unit is checked idle IDLE_WAIT periods after reset moves.
-  parameter real EDGE_TOLERANCE = 0.0;
+  `include "specular_device_parameters.vh"  // VECTORS, ROM images, the policy, T, ...
+  // Gate level: 35's edges come a gate delay after the clock's (EDGE_TOLERANCE), and the
+  // control unit is checked idle IDLE_WAIT periods after reset moves.
   parameter real IDLE_WAIT = 0.01;
   // Data of pins 18, 21-23 LOAD_SETUP periods before their strobes 30-33 rise (0: with
   // them, as the zero-delay models allow; a flip-flop with setup time needs more).

@@ -19,7 +19,6 @@
 `timescale 1ns / 1ps
 
 module specular_soc_outstanding_tb;
-  parameter SEED = 1;
   parameter PHASES = 120;
   parameter MAX_IN_FLIGHT = 6;     // the interconnect takes 4 per direction: more wait
   parameter STALL_PERCENT = 15;

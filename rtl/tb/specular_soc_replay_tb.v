@@ -16,7 +16,6 @@
 module specular_soc_replay_tb;
   parameter TRACE = "trace.txt";
   parameter STALL = 0;
-  parameter SEED = 1;
   parameter SHOWN = 20;  // mismatches printed in full
 
   `include "axi_lite_master.vh"

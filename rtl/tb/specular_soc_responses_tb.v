@@ -19,7 +19,6 @@ module specular_soc_responses_tb;
   parameter VECTORS = "vectors.csv";
   parameter MAX_VECTORS = 64;
   parameter STALL = 1;
-  parameter SEED = 1;
 
   `include "axi_lite_master.vh"
   localparam TB_NAME = "specular_soc_responses_tb";

@@ -312,6 +312,22 @@ module specular_ip_axi_tb;
     end
   endtask
 
+  // A read with RREADY raised with ARVALID and no stall: returns at the edge that takes
+  // R (RDATA and RRESP there), RREADY still high (the caller lowers it).
+  task read_unstalled;
+    input [31:0] address;
+    begin
+      araddr = address;
+      arvalid = 1'b1;
+      rready = 1'b1;
+      @(posedge aclk);
+      while (!arready) @(posedge aclk);
+      #1 arvalid = 1'b0;
+      @(posedge aclk);
+      while (!rvalid) @(posedge aclk);
+    end
+  endtask
+
   // A write and a read issued in the same cycle; STATUS.BUSY seen during an operation.
   task check_concurrency;
     reg [31:0] data;
@@ -329,27 +345,13 @@ module specular_ip_axi_tb;
           busy_seen = 0;
           data = 32'd0;
           while (data[1] !== 1'b1) begin
-            araddr = STATUS;
-            arvalid = 1'b1;
-            rready = 1'b1;
-            @(posedge aclk);
-            while (!arready) @(posedge aclk);
-            #1 arvalid = 1'b0;
-            @(posedge aclk);
-            while (!rvalid) @(posedge aclk);
+            read_unstalled(STATUS);
             data = rdata;
             if (rresp !== OKAY) $fatal(1, "MISMATCH STATUS read refused during an operation");
             if (data[0] === 1'b1) busy_seen = busy_seen + 1;
             if (data[0] === 1'b1 && busy_seen == 1) begin  // OUT_* hold the last results meanwhile
               #1 rready = 1'b0;
-              araddr = OUT_R + 4 * (busy_seen % 3);
-              arvalid = 1'b1;
-              rready = 1'b1;
-              @(posedge aclk);
-              while (!arready) @(posedge aclk);
-              #1 arvalid = 1'b0;
-              @(posedge aclk);
-              while (!rvalid) @(posedge aclk);
+              read_unstalled(OUT_R + 4 * (busy_seen % 3));
               if (rdata !== out_before[busy_seen % 3])
                 $fatal(1, "MISMATCH OUT word %0d changed during an operation", busy_seen % 3);
             end

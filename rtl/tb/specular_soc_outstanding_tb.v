@@ -221,51 +221,46 @@ module specular_soc_outstanding_tb;
     end
   endfunction
 
-  initial begin : aw_channel
-    wait (started);
-    while (aw_next < wr_total) begin
-      while (aw_next >= ph_wr_end[phase] || aw_next - b_done >= MAX_IN_FLIGHT) @(posedge aclk);
-      #1 repeat (delay(0)) @(posedge aclk);
-      #1 awaddr = wr_addr[aw_next];
-      awvalid = 1'b1;
-      aw_shown = aw_next + 1;
-      @(posedge aclk);
-      while (!awready) @(posedge aclk);
-      aw_next = aw_next + 1;
-      #1 awvalid = 1'b0;
-      awaddr = 32'hDEAD_BEEF;
+  // One channel's requests in order (0 AW, 1 W, 2 AR; a process each): a request waits
+  // for its phase and for fewer than MAX_IN_FLIGHT unanswered before it, its VALID rises
+  // delay(0) cycles late and is held until READY. The counts aw_next, w_next, ar_next
+  // (requests taken) are the scoreboard's.
+  task automatic issue(input integer ch);
+    integer next;
+    begin
+      wait (started);
+      next = 0;
+      while (next < (ch == 2 ? rd_total : wr_total)) begin
+        while (next >= (ch == 2 ? ph_rd_end[phase] : ph_wr_end[phase]) ||
+               next - (ch == 2 ? r_done : b_done) >= MAX_IN_FLIGHT) @(posedge aclk);
+        #1 repeat (delay(0)) @(posedge aclk);
+        #1 case (ch)
+          0: begin awaddr = wr_addr[next]; awvalid = 1'b1; aw_shown = next + 1; end
+          1: begin
+            wdata = wr_data[next]; wstrb = wr_strb[next]; wvalid = 1'b1;
+            if (aw_shown <= next) w_first = w_first + 1;
+          end
+          default: begin araddr = rd_addr[next]; arvalid = 1'b1; end
+        endcase
+        @(posedge aclk);
+        while (!(ch == 0 ? awready : ch == 1 ? wready : arready)) @(posedge aclk);
+        next = next + 1;
+        case (ch)
+          0: aw_next = next;
+          1: w_next = next;
+          default: ar_next = next;
+        endcase
+        #1 case (ch)
+          0: begin awvalid = 1'b0; awaddr = 32'hDEAD_BEEF; end
+          1: begin wvalid = 1'b0; wdata = 32'hDEAD_BEEF; end
+          default: begin arvalid = 1'b0; araddr = 32'hDEAD_BEEF; end
+        endcase
+      end
     end
-  end
-  initial begin : w_channel
-    wait (started);
-    while (w_next < wr_total) begin
-      while (w_next >= ph_wr_end[phase] || w_next - b_done >= MAX_IN_FLIGHT) @(posedge aclk);
-      #1 repeat (delay(0)) @(posedge aclk);
-      #1 wdata = wr_data[w_next];
-      wstrb = wr_strb[w_next];
-      wvalid = 1'b1;
-      if (aw_shown <= w_next) w_first = w_first + 1;
-      @(posedge aclk);
-      while (!wready) @(posedge aclk);
-      w_next = w_next + 1;
-      #1 wvalid = 1'b0;
-      wdata = 32'hDEAD_BEEF;
-    end
-  end
-  initial begin : ar_channel
-    wait (started);
-    while (ar_next < rd_total) begin
-      while (ar_next >= ph_rd_end[phase] || ar_next - r_done >= MAX_IN_FLIGHT) @(posedge aclk);
-      #1 repeat (delay(0)) @(posedge aclk);
-      #1 araddr = rd_addr[ar_next];
-      arvalid = 1'b1;
-      @(posedge aclk);
-      while (!arready) @(posedge aclk);
-      ar_next = ar_next + 1;
-      #1 arvalid = 1'b0;
-      araddr = 32'hDEAD_BEEF;
-    end
-  end
+  endtask
+  initial issue(0);
+  initial issue(1);
+  initial issue(2);
   // B and R: READY low at random; each response checked, in order, as it is taken
   always @(posedge aclk) begin
     if (started && bvalid && bready) begin

@@ -72,17 +72,31 @@ module specular_ip_axi_gate_tb;
     #(T / 2 - T / 64);
   endtask
 
+  // end_period: to the falling edge that ends the access's period (the caller then
+  // lowers what was taken); an access not done in 50 periods is a failure, not a hang
+  integer periods;
+  task end_period;
+    input [8*5-1:0] kind;
+    input [31:0] address;
+    input [8*8-1:0] awaited;
+    begin
+      @(negedge aclk);
+      periods = periods + 1;
+      if (periods > 50)
+        $fatal(1, "specular_ip_axi_gate_tb: MISMATCH %0s 0x%08h: no %0s in 50 periods", kind, address, awaited);
+    end
+  endtask
+
   task write;
     input [31:0] address;
     input [31:0] data;
     reg aw_done, w_done, b_done;
-    integer k;
     begin
       awaddr = address; awvalid = 1'b1;
       wdata = data; wstrb = 4'b1111; wvalid = 1'b1;
       bready = 1'b1;
       aw_done = 1'b0; w_done = 1'b0; b_done = 1'b0;
-      k = 0;
+      periods = 0;
       while (!b_done) begin
         sample;
         if (awvalid && awready === 1'b1) aw_done = 1'b1;
@@ -96,11 +110,9 @@ module specular_ip_axi_gate_tb;
             $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h of 0x%08h: response %b, expected OKAY at %0t",
                    address, data, bresp, $realtime);
         end
-        @(negedge aclk);
+        end_period("write", address, "response");
         if (aw_done) awvalid = 1'b0;
         if (w_done) wvalid = 1'b0;
-        k = k + 1;
-        if (k > 50) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h: no response in 50 periods", address);
       end
       bready = 1'b0;
     end
@@ -111,12 +123,11 @@ module specular_ip_axi_gate_tb;
     input [31:0] expected;
     input [8*16-1:0] what;
     reg ar_done, r_done;
-    integer k;
     begin
       araddr = address; arvalid = 1'b1;
       rready = 1'b1;
       ar_done = 1'b0; r_done = 1'b0;
-      k = 0;
+      periods = 0;
       while (!r_done) begin
         sample;
         if (arvalid && arready === 1'b1) ar_done = 1'b1;
@@ -126,10 +137,8 @@ module specular_ip_axi_gate_tb;
             $fatal(1, "specular_ip_axi_gate_tb: MISMATCH read 0x%08h (%0s): 0x%08h response %b, expected 0x%08h OKAY at %0t",
                    address, what, rdata, rresp, expected, $realtime);
         end
-        @(negedge aclk);
+        end_period("read", address, "data");
         if (ar_done) arvalid = 1'b0;
-        k = k + 1;
-        if (k > 50) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH read 0x%08h: no data in 50 periods", address);
       end
       rready = 1'b0;
     end
@@ -141,14 +150,21 @@ module specular_ip_axi_gate_tb;
   `include "specular_vectors.vh"  // read_vectors: VECTORS into v_*[0:count-1]
 
   // ---- the three kinds of access ----
-  task operation;
+  // N, R, G, B of vector i, in that order (an operation writes COS after them)
+  task write_nrgb;
     input integer i;
-    input integer all_reads;
     begin
       write(N, v_n[i]);
       write(R, v_r[i]);
       write(G, v_g[i]);
       write(B, v_b[i]);
+    end
+  endtask
+  task operation;
+    input integer i;
+    input integer all_reads;
+    begin
+      write_nrgb(i);
       write(COS, v_reg1[i]);
       write(CONTROL, 32'h1);   // START: its response comes with the results
       if (done_irq !== 1'b1) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH vector %0d: done_irq low after START's response", i);
@@ -184,10 +200,7 @@ module specular_ip_axi_gate_tb;
     input integer i;
     begin
       write(COS, v_reg1[i]);
-      write(N, v_n[i]);
-      write(R, v_r[i]);
-      write(G, v_g[i]);
-      write(B, v_b[i]);
+      write_nrgb(i);
     end
   endtask
 

@@ -1,8 +1,8 @@
 // axi_lite_master.vh: the testbenches' AXI4-Lite master, in order, one access at a time
 // (docs/rtl_ip.md, "Placing the IP in an SoC"). `include it inside the testbench module,
-// after the module's parameter STALL (1: each VALID rises 0-3 cycles late and each
-// BREADY/RREADY 0-3 cycles late, at random; 0: no stall). It declares:
-//   - the parameter SEED (the stalls' seed, default 1);
+// after the module's parameters STALL (1: each VALID rises 0-3 cycles late and each
+// BREADY/RREADY 0-3 cycles late, at random; 0: no stall) and SEED (the stalls' seed).
+// It declares:
 //   - aclk (10 ns period) and aresetn (low until reset_release);
 //   - the master's signals, to connect to the slave: awvalid, awaddr, wvalid, wdata,
 //     wstrb, bready, arvalid, araddr, rready (driven here) and awready, wready, bvalid,
@@ -16,7 +16,6 @@
 // its variables, so a branch that must wait on its own counts with `repeat`.
 // Signals are driven 1 ns after a rising edge and sampled at the edge.
 
-  parameter SEED = 1;
   reg aclk = 1'b0, aresetn = 1'b0;
   always #5 aclk = ~aclk;
 

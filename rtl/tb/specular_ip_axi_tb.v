@@ -21,6 +21,7 @@ module specular_ip_axi_tb;
   parameter VECTORS = "vectors.csv";
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
   parameter STALL = 1;
+  parameter SEED = 1;
   parameter MAX_VECTORS = 4096;
 
   `include "axi_lite_master.vh"  // aclk, aresetn, the master's signals and tasks

@@ -27,9 +27,8 @@ module specular_soc_outstanding_tb;
   localparam RAM_LOCS = 24;        // 16 words at the RAM's start, 8 at its end
   localparam MAX_OPS = PHASES * MAX_PER_PHASE + RAM_LOCS;  // phase 0 writes every RAM word
 
-  `include "axi_lite_master.vh"
   localparam SOC_OPEN_WRITES = 4, SOC_OPEN_READS = 4;  // specular_soc_dut.vh's soc_port
-  `include "specular_soc_dut.vh"
+  `include "specular_soc_dut.vh"  // SEED, the master (axi_lite_master.vh), the SoC
 
   // The rules on the RAM's port (it queues 4 responses, as the interconnect keeps 4 in
   // flight on the SoC's port) and on the IP's (its own holding registers: the defaults).

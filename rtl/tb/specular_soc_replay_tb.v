@@ -18,9 +18,8 @@ module specular_soc_replay_tb;
   parameter STALL = 0;
   parameter SHOWN = 20;  // mismatches printed in full
 
-  `include "axi_lite_master.vh"
   localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
-  `include "specular_soc_dut.vh"
+  `include "specular_soc_dut.vh"  // SEED, the master (axi_lite_master.vh), the SoC
 
 
   integer accesses = 0, reads_compared = 0, mismatches = 0;

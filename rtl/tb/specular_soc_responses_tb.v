@@ -20,12 +20,11 @@ module specular_soc_responses_tb;
   parameter MAX_VECTORS = 64;
   parameter STALL = 1;
 
-  `include "axi_lite_master.vh"
+  localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
+  `include "specular_soc_dut.vh"  // SEED, the master (axi_lite_master.vh), the SoC
   localparam TB_NAME = "specular_soc_responses_tb";
   localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
   `include "specular_vectors.vh"
-  localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
-  `include "specular_soc_dut.vh"
 
   // The rules on the IP's port too (the SoC's: specular_soc_dut.vh).
   `include "specular_soc_ip_port.vh"

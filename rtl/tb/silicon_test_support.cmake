@@ -4,6 +4,7 @@
 #   gatesim_period(CASE T_SIM_CENTI OUT): the period of a pass/fail replay in ns, as
 #     gatesim.sh takes it ("26.70"): 1.1 T_sim for CASE pass, T_sim / 2 for fail, from
 #     T_sim in 1/100 ns (the figure the bisection measured, not read from this run).
+#   expect_sections(TEXT NAME SECTION...): every SECTION stands in TEXT (the file NAME).
 function(expect_refusal want_pattern)
   execute_process(COMMAND bash ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
   if(NOT status EQUAL 2 OR NOT out MATCHES "${want_pattern}")
@@ -22,4 +23,12 @@ function(gatesim_period case t_sim_centi out)
     set(frac "0${frac}")
   endif()
   set(${out} "${whole}.${frac}" PARENT_SCOPE)
+endfunction()
+function(expect_sections text name)
+  foreach(section IN LISTS ARGN)
+    string(FIND "${text}" "${section}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "${name} lacks '${section}'")
+    endif()
+  endforeach()
 endfunction()

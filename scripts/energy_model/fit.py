@@ -311,7 +311,8 @@ def main():
             "/// gate-level energy (SDF replay at 50 ns, OSU 0.18 um, typical corner: scripts/energy.sh",
             f"/// --per-result) over the streams {', '.join(train)}",
             f"/// ({out['devices'][DEVICES[0][0]]['train_operations']} operations). The bus figures: "
-            "specular_ip_axi's replays (scripts/energy_ip.sh).",
+            "specular_ip_axi's replays",
+            "/// (scripts/energy_ip.sh; the method in docs/rtl_ip/mutants_silicon.md, \"Silicon cost\").",
             "#pragma once",
             "",
             "#include \"specular/energy/operation_features.h\"",

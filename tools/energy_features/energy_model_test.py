@@ -45,25 +45,38 @@ def features(tool, scratch):
     # From the registers after reset (all 0).
     stream = os.path.join(scratch, "two.txt")
     open(stream, "w").write("10000 001 ff 00 80\n08000 002 ff ff ff\n")
+    # ROM 5's address of a bus code: its leading one's place and the bits after it, so
+    # two codes read the same word only if both match; 1.0 on the bus is 0x400000
+    # (register 9's S14.22), cos's U1.16 code shifted 6 places.
     want = [
-        {"one": 1, "toggles_reg1": pop(0x10000), "toggles_reg2": pop(1), "rom38_read": 1, "load": 1,
-         "toggles_rgb": pop(0xff) + pop(0x00) + pop(0x80),
-         "start_reg9": pop(0 ^ 0x400000), "end_reg9": pop(0x400000 ^ 0x400000), "prev_end_reg9": 0,
-         # multiplier 6's second operand: h = 0x80 (pin 19, U10.8), n << 8, h
-         "toggles_mux4": pop(0x80 ^ 0x100) + pop(0x100 ^ 0x80)},
-        {"one": 1, "toggles_reg1": pop(0x10000 ^ 0x08000), "toggles_reg2": pop(1 ^ 2), "rom38_read": 1, "load": 1,
+        {"one": 1, "toggles_reg2": pop(1), "rom38_read": 1, "toggles_rgb": pop(0xff) + pop(0x00) + pop(0x80),
+         # pass 1 and pass 2 both 0x400000: the same address
+         "end_rom5_read": 0,
+         # pass 2 0x400000 back to cos 1.0 << 6 = 0x400000: no read
+         "return_rom5_read": 0,
+         # from reset: pass 2 0 and cos 0, both the zero entry
+         "prev_return_rom5_read": 0,
+         # between operations: cos 0 (the zero entry) to 1.0 (0x400000)
+         "idle_rom5_read": 1,
+         "ones_out": pop(0x42c23b) + pop(0) + pop(0x2182a0)},
+        {"one": 1, "toggles_reg2": pop(1 ^ 2), "rom38_read": 1,
          "toggles_rgb": pop(0xff ^ 0xff) + pop(0x00 ^ 0xff) + pop(0x80 ^ 0xff),
-         "start_reg9": pop(0x400000 ^ 0xc00000), "end_reg9": pop(0xc00000 ^ 0x0d47fc),
-         "prev_end_reg9": pop(0x400000 ^ 0x400000), "toggles_mux4": pop(0x80 ^ 0x200) + pop(0x200 ^ 0x80)},
+         # pass 1 0xc00000 (leading one bit 23), pass 2 0x0d47fc (bit 19)
+         "end_rom5_read": 1,
+         # pass 2 0x0d47fc back to cos 0.5 << 6 = 0x200000 (bit 21)
+         "return_rom5_read": 1,
+         "prev_return_rom5_read": 0,
+         # cos 1.0 (bit 22) to 0.5 (bit 21)
+         "idle_rom5_read": 1,
+         "ones_out": 3 * pop(0x0a63ec)},
     ]
-    # the same n again, R, G, B to 0: no ROM 38 read, no toggle of register 2, a load
+    # the same n again, R, G, B to 0: no ROM 38 read, no toggle of register 2
     open(stream, "a").write("08000 002 00 00 00\n")
-    want.append({"toggles_reg1": 0, "toggles_reg2": 0, "rom38_read": 0, "load": 1, "toggles_rgb": 3 * 8,
-                 "start_reg9": pop(0x0d47fc ^ 0xc00000), "end_reg9": pop(0xc00000 ^ 0x0d47fc),
-                 "prev_end_reg9": pop(0xc00000 ^ 0x0d47fc)})
+    want.append({"toggles_reg2": 0, "rom38_read": 0, "toggles_rgb": 3 * 8, "end_rom5_read": 1,
+                 "idle_rom5_read": 0, "prev_return_rom5_read": 1, "ones_out": 0})
     # and again: nothing loads
     open(stream, "a").write("08000 002 00 00 00\n")
-    want.append({"toggles_reg1": 0, "toggles_reg2": 0, "rom38_read": 0, "load": 0, "toggles_rgb": 0})
+    want.append({"toggles_reg2": 0, "rom38_read": 0, "toggles_rgb": 0, "idle_rom5_read": 0})
     rows = table_from(run([tool, stream]))
     bad = []
     for k, w in enumerate(want):

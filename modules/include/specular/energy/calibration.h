@@ -8,7 +8,8 @@
 /// operation_features.h), fitted by non-negative least squares to each operation's
 /// gate-level energy (SDF replay at 50 ns, OSU 0.18 um, typical corner: scripts/energy.sh
 /// --per-result) over the streams train_changes, train_common, train_cos, train_lobes, train_walk
-/// (1313 operations). The bus figures: specular_ip_axi's replays (scripts/energy_ip.sh).
+/// (1313 operations). The bus figures: specular_ip_axi's replays
+/// (scripts/energy_ip.sh; the method in docs/rtl_ip/mutants_silicon.md, "Silicon cost").
 #pragma once
 
 #include "specular/energy/operation_features.h"
@@ -32,13 +33,13 @@ struct BusTable {
 /// The synchronous device (specular_device_sync): the IP's datapath.
 inline constexpr CalibrationTable synchronous_device_table{
     "specular_device_sync",
-    {0, 0, 17.2514, 471.077, 0, 24.0824, 0, 0, 0, 0, 3.8083, 0, 5.46062, 0, 89.6203, 0, 0, 0, 0, 0, 0, 20.5323, 10.407, 0, 0, 0, 39.3384, 19.6947, 0, 0, 0, 0, 12.7201, 11.1324, 0, 0, 0, 14.24, 263.877, 0, 0, 17.7666, 56.8173, 0, 0, 13.8106, 0, 12.9486}};
-/// one, toggles_reg1, toggles_reg2, rom38_read, load, toggles_rgb, toggles_mux4, start_reg9, start_rom5_reads, start_log2, start_mul6, start_mul39, start_mul_rgb, end_reg9, end_rom5_read, end_log2, end_mul6, end_mul39, end_mul_rgb, prev_end_reg9, prev_end_rom5_read, prev_end_log2, prev_end_mul6, prev_end_mul39, prev_end_mul_rgb, start_mul6_activity, start_mul39_activity, start_mul_rgb_activity, end_mul6_activity, end_mul39_activity, end_mul_rgb_activity, prev_end_mul6_activity, prev_end_mul39_activity, prev_end_mul_rgb_activity, idle_rom5_read, idle_log2, idle_mul6, idle_mul6_activity, return_rom5_read, return_log2, return_mul6, return_mul6_activity, prev_return_rom5_read, prev_return_log2, prev_return_mul6, prev_return_mul6_activity, ones_norm39, ones_out
+    {0, 17.2514, 471.077, 24.0824, 3.8083, 5.46062, 39.3384, 19.6947, 89.6203, 0, 0, 0, 20.5323, 10.407, 12.7201, 11.1324, 0, 14.24, 263.877, 17.7666, 56.8173, 13.8106, 0, 12.9486}};
+/// one, toggles_reg2, rom38_read, toggles_rgb, start_mul6, start_mul_rgb, start_mul39_activity, start_mul_rgb_activity, end_rom5_read, end_log2, end_mul6, end_mul_rgb_activity, prev_end_log2, prev_end_mul6, prev_end_mul39_activity, prev_end_mul_rgb_activity, idle_rom5_read, idle_mul6_activity, return_rom5_read, return_mul6_activity, prev_return_rom5_read, prev_return_mul6_activity, ones_norm39, ones_out
 /// The drawn device of Fig. 2 (specular_device).
 inline constexpr CalibrationTable drawn_device_table{
     "specular_device",
-    {0, 0, 19.3356, 484.75, 0, 23.0398, 0, 0, 0, 0, 0, 0, 0, 0, 273.606, 3.75335, 14.3159, 0, 0, 0, 0, 2.77, 0, 0, 0, 0, 63.5591, 28.7667, 0, 0, 1.77231, 0, 0, 0, 91.5296, 0, 0, 7.56241, 584.396, 0, 0, 16.9933, 0, 0, 0, 5.58343, 17.7571, 21.0447}};
-/// one, toggles_reg1, toggles_reg2, rom38_read, load, toggles_rgb, toggles_mux4, start_reg9, start_rom5_reads, start_log2, start_mul6, start_mul39, start_mul_rgb, end_reg9, end_rom5_read, end_log2, end_mul6, end_mul39, end_mul_rgb, prev_end_reg9, prev_end_rom5_read, prev_end_log2, prev_end_mul6, prev_end_mul39, prev_end_mul_rgb, start_mul6_activity, start_mul39_activity, start_mul_rgb_activity, end_mul6_activity, end_mul39_activity, end_mul_rgb_activity, prev_end_mul6_activity, prev_end_mul39_activity, prev_end_mul_rgb_activity, idle_rom5_read, idle_log2, idle_mul6, idle_mul6_activity, return_rom5_read, return_log2, return_mul6, return_mul6_activity, prev_return_rom5_read, prev_return_log2, prev_return_mul6, prev_return_mul6_activity, ones_norm39, ones_out
+    {0, 19.3356, 484.75, 23.0398, 0, 0, 63.5591, 28.7667, 273.606, 3.75335, 14.3159, 1.77231, 2.77, 0, 0, 0, 91.5296, 7.56241, 584.396, 16.9933, 0, 5.58343, 17.7571, 21.0447}};
+/// one, toggles_reg2, rom38_read, toggles_rgb, start_mul6, start_mul_rgb, start_mul39_activity, start_mul_rgb_activity, end_rom5_read, end_log2, end_mul6, end_mul_rgb_activity, prev_end_log2, prev_end_mul6, prev_end_mul39_activity, prev_end_mul_rgb_activity, idle_rom5_read, idle_mul6_activity, return_rom5_read, return_mul6_activity, prev_return_rom5_read, prev_return_mul6_activity, ones_norm39, ones_out
 /// specular_ip_axi's register accesses and idle clock.
 inline constexpr BusTable bus_table{19.1329, 48.2428, 143.397};
 

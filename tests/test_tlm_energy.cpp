@@ -162,7 +162,8 @@ TEST(TlmEnergy, PowerLandsInTheWindowOfTheAnnotatedTime) {
   const double idle_mw = 100 * idle_clock_pj / 1000;
   for (std::size_t w = 0; w < windows.size(); ++w) {
     if (w == 5)
-      EXPECT_GT(windows[w], idle_mw + 1.0) << "window " << w;  // the operation: about 4.8 nJ / 1 us
+      // the operation on the registers' reset operands (cos 0, R, G, B 0): about 0.8 nJ / 1 us
+      EXPECT_GT(windows[w], idle_mw + 0.4) << "window " << w;
     else
       EXPECT_NEAR(windows[w], idle_mw, 0.01) << "window " << w;
   }

@@ -361,6 +361,7 @@ class TlmInitiator : public sc_core::sc_module {
     SPECULAR_HAS_PROCESS(TlmInitiator);
     socket_.bind(target_.socket);
     target_.done_irq(irq_);
+    target_.set_energy_model(true);  // specular_tb reports the energy (issue 61)
     // The power trace (issue 61): for the CSV and for the target's view in a VCD.
     if (settings.power_window || !settings.vcd_base.empty()) {
       target_.trace_power(sc_core::sc_time(static_cast<double>(settings.power_window_ps), sc_core::SC_PS));

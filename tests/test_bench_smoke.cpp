@@ -67,7 +67,7 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
                             "tlm_lt_batch", "tlm_pin_batch", "pin_growth_1k", "pin_growth_10k",
                             "pin_growth_100k", "vcd_growth_10k", "pow_end", "rtl_sync_cpp",
                             "rtl_sync_cpp_stream", "rtl_sync_general_cpp_stream",
-                            "rtl_general_cpp_stream", "tlm_lt_quantum_energy_off", "tlm_lt_batch_energy_off"}) {
+                            "rtl_general_cpp_stream", "tlm_lt_quantum_energy", "tlm_lt_batch_energy"}) {
     EXPECT_EQ(names.count(std::string(model) + "_rate"), 1u) << model;
     EXPECT_EQ(names.count(std::string(model) + "_peak_memory"), 1u) << model;
   }

@@ -51,6 +51,7 @@ TEST(TlmEnergy, AnIdleTargetCostsTheIdleClockPerPeriod) {
   std::vector<double> windows;
   energy::EnergyTally tally;
   run({Kind::lt}, [&](TlmBench& b) {
+    for (auto& endpoint : b.endpoints) endpoint->target->set_energy_model(true);  // off by default
     SpecularTarget& t = *b.at(0).target;
     t.trace_power(sc_time(1, SC_US));
     t.on_power_window([&](const sc_time&, double mw) { windows.push_back(mw); });
@@ -68,6 +69,7 @@ TEST(TlmEnergy, AnIdleTargetCostsTheIdleClockPerPeriod) {
 TEST(TlmEnergy, ReadsAndWritesCostTheirGateLevelFigures) {
   energy::EnergyTally tally;
   run({Kind::lt}, [&](TlmBench& b) {
+    for (auto& endpoint : b.endpoints) endpoint->target->set_energy_model(true);  // off by default
     Endpoint& e = b.at(0);
     // As the gate-level replay does them: back to back, a read every 2 clocks, a write every 3.
     for (int i = 0; i < 100; ++i) {
@@ -94,6 +96,7 @@ TEST_P(TlmEnergyOfOperations, RandomOperationsCostTheGateLevelMean) {
   energy::EnergyTally tally;
   energy::Calibration calibration{};
   run({kind}, [&](TlmBench& b) {
+    for (auto& endpoint : b.endpoints) endpoint->target->set_energy_model(true);  // off by default
     Endpoint& e = b.at(0);
     calibration = e.target->energy_calibration();
     if (kind == Kind::pin) e.pin().harness.reset();
@@ -118,6 +121,7 @@ TEST(TlmEnergy, EveryTargetCountsTheSameWork) {
   const std::vector<Operands> ops = random_operands(40, 7);
   std::vector<energy::EnergyTally> tallies(kinds.size());
   run(kinds, [&](TlmBench& b) {
+    for (auto& endpoint : b.endpoints) endpoint->target->set_energy_model(true);  // off by default
     b[Kind::pin].pin().harness.reset();
     for (std::size_t k = 0; k < kinds.size(); ++k) {
       Endpoint& e = b.at(k);
@@ -141,6 +145,7 @@ TEST(TlmEnergy, EveryTargetCountsTheSameWork) {
 TEST(TlmEnergy, PowerLandsInTheWindowOfTheAnnotatedTime) {
   std::vector<double> windows;
   run({Kind::lt}, [&](TlmBench& b) {
+    for (auto& endpoint : b.endpoints) endpoint->target->set_energy_model(true);  // off by default
     Endpoint& e = b.at(0);
     e.target->trace_power(sc_time(1, SC_US));
     e.target->on_power_window([&](const sc_time&, double mw) { windows.push_back(mw); });
@@ -173,6 +178,7 @@ TEST(TlmEnergy, TheWindowsAddUpToTheTally) {
   double windows_pj = 0;
   energy::EnergyTally tally;
   run({Kind::lt}, [&](TlmBench& b) {
+    for (auto& endpoint : b.endpoints) endpoint->target->set_energy_model(true);  // off by default
     Endpoint& e = b.at(0);
     e.target->trace_power(sc_time(100, SC_NS));
     e.target->on_power_window([&](const sc_time&, double mw) { windows_pj += mw * 100; });
@@ -254,9 +260,10 @@ TEST(TlmEnergy, OffCountsNothing) {
   std::vector<double> windows;
   run({Kind::lt}, [&](TlmBench& b) {
     Endpoint& e = b.at(0);
+    EXPECT_FALSE(e.target->energy_model());  // off by default
+    e.target->set_energy_model(true);
     e.target->set_energy_model(false);
     EXPECT_FALSE(e.target->energy_model());
-    e.target->trace_power(sc_time(1, SC_US));
     e.target->on_power_window([&](const sc_time&, double mw) { windows.push_back(mw); });
     e.driver.compute(random_operands(1, 1).front());
     e.keeper.sync();

@@ -74,6 +74,7 @@ int sc_main(int argc, char* argv[]) {
                  " target (the package was installed or found without its rtl component)");
 
   soc::Platform platform("soc", target, static_cast<std::size_t>(operations), strict, pin_delay);
+  platform.ip->set_energy_model(true);  // the second line reports it (issue 61)
   sc_core::sc_start();
 
   const soc::Cpu& cpu = platform.cpu;

@@ -120,6 +120,7 @@ int sc_main(int argc, char** argv) {
   bus.output(0).bind(memory.socket);
   bus.output(1).bind(ip.socket);
   ip.done_irq(irq);
+  ip.set_energy_model(true);  // the frame's energy is reported (issue 61)
 
   sc_core::sc_start();
   if (!cpu.failure.empty()) {

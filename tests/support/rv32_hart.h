@@ -80,7 +80,7 @@ struct Rv32Hart : sc_core::sc_module {
     SPECULAR_HAS_PROCESS(Rv32Hart);
     target = make_target("ip", kind, Config{});
     wire(socket, *target, wiring);
-    counter = std::make_unique<SpecularEnergyCounter>("energy_counter", *target);
+    counter = std::make_unique<SpecularEnergyCounter>("energy_counter", *target);  // switches the model on
     counter_socket.bind(counter->socket);
     target->on_done_irq([this](bool level) {
       if (level && !line && irq_wiring == IrqWiring::plic) plic.pending = true;  // the gateway's edge

@@ -5,8 +5,9 @@
 
 namespace specular {
 
-SpecularEnergyCounter::SpecularEnergyCounter(sc_core::sc_module_name name, const SpecularTarget& ip)
+SpecularEnergyCounter::SpecularEnergyCounter(sc_core::sc_module_name name, SpecularTarget& ip)
     : sc_module(name), socket("socket"), ip_(ip) {
+  ip.set_energy_model(true);
   socket.register_b_transport(this, &SpecularEnergyCounter::b_transport);
 }
 

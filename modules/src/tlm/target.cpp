@@ -108,8 +108,6 @@ SpecularTarget::SpecularTarget(sc_core::sc_module_name name, const Config& confi
   socket.register_b_transport(this, &SpecularTarget::transport);
   socket.register_transport_dbg(this, &SpecularTarget::transport_dbg);
 
-  meter_ = std::make_unique<energy::EnergyMeter>(calibration_, formats_);
-
   SC_THREAD(sample_power);
 
   done_irq.initialize(false);
@@ -513,6 +511,7 @@ void SpecularTarget::trace_power(const sc_time& window) {
     throw std::invalid_argument("TLM target: the power trace is already on (window " +
                                 power_window_.to_string() + ")");
   power_window_ = window;
+  set_energy_model(true);  // a power trace needs the energy
   binned_pj_ = charged_pj();
   power_on_.notify(sc_core::SC_ZERO_TIME);
 }

@@ -32,8 +32,8 @@ class SpecularEnergyCounter : public sc_core::sc_module {
  public:
   /// Bind a bus's initiator socket here.
   tlm_utils::simple_target_socket<SpecularEnergyCounter, 32> socket;
-  /// A counter reading `ip`'s energy model.
-  SpecularEnergyCounter(sc_core::sc_module_name name, const SpecularTarget& ip);
+  /// A counter reading `ip`'s energy model, which it switches on.
+  SpecularEnergyCounter(sc_core::sc_module_name name, SpecularTarget& ip);
 
  private:
   void b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);

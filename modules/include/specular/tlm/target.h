@@ -79,7 +79,7 @@ class SpecularTarget : public sc_core::sc_module {
   /// The energy model (docs/energy.md): the energy spent so far, at the kernel's
   /// current time: the operations (charged with energy_calibration()'s gate-level fit),
   /// the register reads and writes, and every clock period since time 0 (the IP has no
-  /// clock gating). All zero when the model is off.
+  /// clock gating). All zero while the model is off (the default: set_energy_model).
   energy::EnergyTally energy() const;
   /// The same at time `at` (e.g. an access's annotated time, sc_time_stamp() + delay):
   /// the clocks to `at`, the work charged so far.
@@ -87,12 +87,14 @@ class SpecularTarget : public sc_core::sc_module {
   /// Whose gate-level figures the operations are charged: the drawn device for `pin`
   /// and `rtl`, the synchronous device (the IP's datapath) for the others.
   energy::Calibration energy_calibration() const { return calibration_; }
-  /// Switches the energy model on (the default) or off; off, an access costs one test
-  /// more than without it. Switching keeps what was counted.
+  /// Switches the energy model on or off (off by default: it costs lt several times its
+  /// own time per operation, docs/energy.md; off, an access costs one test more than
+  /// without it). Switching off forgets what was counted; switch on before the first
+  /// access whose energy should count.
   void set_energy_model(bool on);
   /// Whether the energy model is on.
   bool energy_model() const { return meter_ != nullptr; }
-  /// Starts the power trace: power_mw() becomes, at the end of each `window` (> 0), the
+  /// Starts the power trace (and switches the energy model on): power_mw() becomes, at the end of each `window` (> 0), the
   /// mean power over it; an access's energy counts in the window of its annotated end
   /// (sc_time_stamp() + delay), so temporal decoupling shifts nothing. Call once, before
   /// or during the simulation (the windows start then); throws

@@ -1,0 +1,54 @@
+// The one command-line library of specular_tb and the tools: CLI11 with the house rules
+// set once. Every executable declares its options on a CLI::App and calls cli::run:
+//
+//   CLI::App app{"what the tool does", "specular_NAME"};
+//   specular::cli::house_rules(app);
+//   app.add_option("--count", count, "...")->check(specular::cli::integer_in(1, 100));
+//   return specular::cli::run(app, argc, argv, [&] { ...; return 0; });
+//
+// The rules: --help is built from the declarations, --version prints the project's
+// version, and every bad command line (or configuration file, or UsageError thrown by
+// the tool) is one line on standard error, "<tool>: error: <option>: <value> is not
+// <allowed range or set>", with exit status 2.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace specular {
+namespace cli {
+
+/// The project's version (CMake's PROJECT_VERSION).
+const char* version();
+
+/// --version, the error spelling, the help's layout; `footer` ends the help (exit
+/// statuses, examples).
+void house_rules(CLI::App& app, const std::string& footer = "");
+
+/// Parses the command line and runs `body`: --help and --version print and return 0, a
+/// bad command line or a UsageError out of `body` prints one line and returns 2;
+/// otherwise body's status.
+int run(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
+/// The same for a tool that already holds its arguments (argv[1..]).
+int run(CLI::App& app, std::vector<std::string> args, const std::function<int()>& body);
+
+// Checks of a value as the user typed it, through parse_values.h's strict conversions
+// (the whole text or nothing; "010" is ten): the message names the value and the
+// allowed range. Integers are rewritten to plain decimal for CLI11's own conversion.
+
+/// A decimal integer in [lo, hi]; `what` names it in the message ("N = 0 is outside
+/// ..."), empty: the value alone ("0 is outside ...").
+CLI::Validator integer_in(long long lo, long long hi, const std::string& what = "");
+/// An unsigned 64-bit decimal integer (a seed, a count).
+CLI::Validator unsigned64(const std::string& what = "");
+/// A real number in [lo, hi]; `range` as the message shows it (empty: "[lo, hi]").
+CLI::Validator real_in(double lo, double hi, const std::string& range = "",
+                       const std::string& what = "");
+/// One of `names`: "'x' is not one of: a, b, c".
+CLI::Validator one_of(const std::vector<std::string>& names, const std::string& what = "");
+
+}  // namespace cli
+}  // namespace specular

@@ -50,5 +50,37 @@ CLI::Validator real_in(double lo, double hi, const std::string& range = "",
 /// One of `names`: "'x' is not one of: a, b, c".
 CLI::Validator one_of(const std::vector<std::string>& names, const std::string& what = "");
 
+/// A check through `parse`, one of the project's parsers (parse_shard, parse_constants,
+/// ...): the text is good when it does not throw, and its message is the error (a leading
+/// "<option>: " of it dropped, CLI11 names the option).
+template <class Parse>
+CLI::Validator parsed_by(Parse parse) {
+  return CLI::Validator(
+      [parse](std::string& text) -> std::string {
+        try {
+          parse(text);
+          return {};
+        } catch (const std::exception& e) {
+          const std::string message = e.what();
+          const auto colon = message.find(": ");
+          const bool named = message.rfind("--", 0) == 0 && colon != std::string::npos &&
+                             message.find(' ') > colon;
+          return named ? message.substr(colon + 2) : message;
+        }
+      },
+      "");
+}
+
+/// An option whose text `parse` turns into `target` (an enum, a shard), checked first by
+/// parsed_by(parse).
+template <class T, class Parse>
+CLI::Option* add_parsed(CLI::App& app, const std::string& name, T& target, Parse parse,
+                        const std::string& help) {
+  return app
+      .add_option_function<std::string>(
+          name, [&target, parse](const std::string& text) { target = parse(text); }, help)
+      ->check(parsed_by(parse));
+}
+
 }  // namespace cli
 }  // namespace specular

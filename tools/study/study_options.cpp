@@ -3,7 +3,6 @@
 #include "cli.h"
 #include "shard.h"
 #include "specular/format.h"
-#include "usage_error.h"
 
 namespace specular {
 namespace study {
@@ -39,17 +38,7 @@ void add_study_options(CLI::App& app, StudyOptions& o) {
                  "1 error study, 2 energy integrals, 3 device-energy integrals, 4 width exploration, "
                  "5 sphere renders)")
       ->type_name("I/N")
-      ->check(CLI::Validator(
-          [](std::string& v) {
-            try {
-              tb::parse_shard(v);
-              return std::string();
-            } catch (const tb::UsageError& e) {
-              const std::string message = e.what();  // CLI11 puts the option's name first
-              return message.rfind("--shard: ", 0) == 0 ? message.substr(9) : message;
-            }
-          },
-          ""));
+      ->check(cli::parsed_by(tb::parse_shard));
   app.add_option("--partial", o.partial,
                  "write this run's partial result (JSON: settings, commit, shard, the files written, "
                  "what the summary needs, timing)")

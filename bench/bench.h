@@ -101,6 +101,7 @@ struct TlmOptions {
   sc_core::sc_time quantum;  ///< global quantum of the tlm_quantumkeeper; zero: no decoupling
   bool burst = false;    ///< compute_burst() per result (OPERANDS / RESULTS), else compute()
   bool rtl = false;      ///< SpecularRtlTarget (the RTL twin clocked in b_transport); overrides pin
+  bool energy = true;    ///< the target's energy model (issue 61) on, as it is by default
 };
 void measure_tlm(const Plan& plan, const std::string& name, const TlmOptions& options);
 

@@ -155,6 +155,18 @@ std::vector<Model> listed_models() {
       {"tlm_lt_batch",
        [](const Plan& p) { measure_tlm(p, "tlm_lt_batch", {false, true, sc_core::sc_time(1, sc_core::SC_US)}); },
        8'000'000, 100'000, 5, "TLM lt target, BATCH_COS bursts of 256 sharing n/RGB, 1 us quantum"},
+      // The energy model's cost (issue 61): the same two lt runs with it switched off.
+      {"tlm_lt_quantum_energy_off",
+       [](const Plan& p) {
+         measure_tlm(p, "tlm_lt_quantum_energy_off",
+                     {false, false, sc_core::sc_time(1, sc_core::SC_US), true, false, false});
+       },
+       4'000'000, 20'000, 3, "tlm_lt_quantum with the energy model off (set_energy_model(false))"},
+      {"tlm_lt_batch_energy_off",
+       [](const Plan& p) {
+         measure_tlm(p, "tlm_lt_batch_energy_off", {false, true, sc_core::sc_time(1, sc_core::SC_US), false, false, false});
+       },
+       8'000'000, 100'000, 5, "tlm_lt_batch with the energy model off"},
       {"tlm_pin_batch",
        [](const Plan& p) { measure_tlm(p, "tlm_pin_batch", {true, true, sc_core::sc_time(1, sc_core::SC_US)}); },
        200'000, 4096, 1, "TLM pin target, BATCH_COS bursts of 256 sharing n/RGB"},
@@ -291,6 +303,9 @@ const std::vector<Target>& targets() {
       {"rtl_sync_vs_pin", true, 3.0, "synchronous RTL variant under the pin harness (3 T) over the SystemC netlist"},
       {"rtl_sync_stream_vs_pin_stream", true, 3.0, "synchronous RTL variant under the pin harness, streaming (2 T), over the netlist"},
       {"vcd_slowdown", false, 6.0, "pin-level device without VCD over with VCD (how much slower tracing is)"},
+      // Issue 61: the energy model slows the lt target by at most 5 %.
+      {"energy_slowdown_quantum", false, 1.05, "TLM lt, 1 us quantum: energy model off over on"},
+      {"energy_slowdown_batch", false, 1.05, "TLM lt, BATCH_COS bursts: energy model off over on"},
   };
    return all;
 }
@@ -319,6 +334,11 @@ void add_ratios(Round& round, std::vector<std::string>& order) {
     add("core_csv_vs_core", rate("core_csv") / rate("core"), "x");
     add("core_json_vs_core", rate("core_json") / rate("core"), "x");
   }
+  // Issue 61: what the energy model costs the lt target (off over on: 1.05 is 5 % slower).
+  if (rate("tlm_lt_quantum") > 0 && rate("tlm_lt_quantum_energy_off") > 0)
+    add("energy_slowdown_quantum", rate("tlm_lt_quantum_energy_off") / rate("tlm_lt_quantum"), "x");
+  if (rate("tlm_lt_batch") > 0 && rate("tlm_lt_batch_energy_off") > 0)
+    add("energy_slowdown_batch", rate("tlm_lt_batch_energy_off") / rate("tlm_lt_batch"), "x");
   if (rate("pin_vcd_on") > 0) add("vcd_slowdown", rate("pin_vcd_off") / rate("pin_vcd_on"), "x");
   if (rate("pin_vcd_real_views") > 0)
     add("vcd_real_views_slowdown", rate("pin_vcd_off") / rate("pin_vcd_real_views"), "x");

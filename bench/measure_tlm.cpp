@@ -34,6 +34,7 @@ class TlmBench : public sc_core::sc_module {
       target_ = std::make_unique<specular::SpecularLtTarget>("ip", specular::Config{}, clock_period);
     socket.bind(target_->socket);
     target_->done_irq(done_irq_);
+    target_->set_energy_model(options.energy);
     for (std::size_t i = 0; i < ring_size; ++i) cos_ring_[i] = static_cast<std::uint32_t>(ring_[i].cos);
     SC_THREAD(drive);
   }

@@ -70,6 +70,8 @@ Json summary_json(const Summary& s, bool places) {
   }
   j["cycles_min"] = s.cycles_min;
   j["cycles_max"] = s.cycles_max;
+  j["energy_pj"] = s.energy_pj;  // issue 61
+  if (s.energy_bus_pj != 0) j["energy_bus_pj"] = s.energy_bus_pj;
   if (places) j["checksum"] = hex64(s.checksum);
   return j;
 }
@@ -89,6 +91,8 @@ Summary summary_from_json(const Json& j) {
   s.out = worst_from_json(j.at("max_out_error"), true);
   s.cycles_min = j.at("cycles_min").get<double>();
   s.cycles_max = j.at("cycles_max").get<double>();
+  s.energy_pj = j.value("energy_pj", 0.0);  // absent from partial results before issue 61
+  s.energy_bus_pj = j.value("energy_bus_pj", 0.0);
   const std::string checksum = j.at("checksum").get<std::string>();
   std::size_t used = 0;
   s.checksum = std::stoull(checksum, &used, 16);

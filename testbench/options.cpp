@@ -45,6 +45,8 @@ const std::map<std::string, std::string>& valued_options() {
       {"--trace-failures", "a directory"},
       {"--trace-failures-max", "a count in [1, 1000]"},
       {"--variant", "a design variant's name, one of: " + variant_list()},  // issue 26
+      {"--power-csv", "a file name"},                                            // issue 61
+      {"--power-window", "a count of nanoseconds in [1, 1000000000]"},
   };
   return options;
 }
@@ -122,6 +124,14 @@ Options parse_options(const std::vector<std::string>& args) {
       } else if (option == "--trace-failures") {
         if (value.empty()) throw UsageError("the directory name is empty");
         o.failure_dir = value;
+      } else if (option == "--power-csv") {  // issue 61: the TLM target's power trace
+        if (value.empty()) throw UsageError("the file name is empty");
+        o.power_csv_path = value;
+      } else if (option == "--power-window") {
+        const std::string range = "[1, 1000000000] (ns)";
+        const long long ns = parse_integer(value, "NS", range);
+        if (ns < 1 || ns > 1000000000) throw UsageError("NS = " + value + " is outside the allowed range " + range);
+        o.power_window_ns = static_cast<std::uint64_t>(ns);
       } else if (option == "--trace-failures-max") {
         const std::string range = "[1, " + std::to_string(failure_traces_max) + "]";
         const long long count = parse_integer(value, "N", range);
@@ -230,9 +240,20 @@ Options parse_options(const std::vector<std::string>& args) {
     throw UsageError("--rgb applies to --cos/--n and --sweep only (the file or the random draw gives R, G, B)");
   if (seen.count("--seed") && o.stimulus != StimulusKind::random)
     throw UsageError("--seed applies to --random N only");
-  if (!o.vcd_path.empty() && !pin_level(o.model))
-    throw UsageError("--vcd needs --model pin, rtl or rtl-sync (the " + std::string(to_string(o.model)) +
+  if (!o.vcd_path.empty() && !pin_level(o.model) && o.model != Model::tlm)
+    throw UsageError("--vcd needs --model pin, rtl, rtl-sync or tlm (the " + std::string(to_string(o.model)) +
                      " model has no signals to trace)");
+  if (o.model == Model::tlm && !o.vcd_path.empty() && (o.trace_window || o.real_views))
+    throw UsageError(std::string(o.trace_window ? "--trace-ops" : "--real-views") +
+                     " needs a pin-level model (--model tlm's VCD is the target's view: STATUS, "
+                     "done_irq and the power, over the whole run)");
+  if (!o.power_csv_path.empty() && o.model != Model::tlm)
+    throw UsageError("--power-csv needs --model tlm (the TLM target carries the power trace; the " +
+                     std::string(to_string(o.model)) + " model reports its energy in the summary)");
+  if (seen.count("--power-window") && o.model != Model::tlm)
+    throw UsageError("--power-window needs --model tlm (the window of its power trace)");
+  if (!o.power_csv_path.empty() && (o.power_csv_path == o.output_path || o.power_csv_path == o.vcd_path))
+    throw UsageError("--power-csv names the same file as --output or --vcd: '" + o.power_csv_path + "'");
   if (o.real_views && (o.model == Model::rtl || o.model == Model::rtl_sync))
     throw UsageError("--real-views needs --model pin (the " + std::string(to_string(o.model)) +
                      " model's VCD is Verilator's, of the RTL's own nets as codes: "
@@ -376,6 +397,14 @@ Output:
                             A name ending in .fst gives GTKWave's compressed FST
                             (rtl, rtl-sync: written by Verilator; pin: converted
                             by GTKWave's vcd2fst when the run ends).
+                            tlm model: the target's view, whole run: STATUS's busy,
+                            done and error, done_irq, the power (mW, over
+                            --power-window) and the energy so far (pJ); open it with
+                            waveforms/specular_tlm.gtkw.
+  --power-csv FILE          tlm model: the power trace, a row per window: its end
+                            (ns), the mean power over it (mW), the energy so far (pJ)
+  --power-window NS         tlm model: the power trace's window, 1 ns to 1 s
+                            (default 1000 ns)
   --trace-ops FIRST:COUNT   with --vcd: trace only operations FIRST .. FIRST+COUNT-1
                             (counted from 0, as in the CSV's rows): the file holds the
                             instants from the first one's inputs to the last one's

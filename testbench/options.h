@@ -33,7 +33,9 @@ struct Options {
   Model model = Model::pin;                        ///< --model
   Config config{};                                 ///< --policy, --saturation
   std::uint64_t clock_period_ps = 10000;           ///< --clock-period (10 ns)
-  std::string vcd_path;                            ///< --vcd (pin model only)
+  std::string vcd_path;                            ///< --vcd (pin-level models and tlm)
+  std::string power_csv_path;                      ///< --power-csv (tlm model only)
+  std::uint64_t power_window_ns = 1000;            ///< --power-window (tlm model only)
   bool real_views = false;                         ///< --real-views (needs --vcd)
   OutputFormat format = OutputFormat::text;        ///< --format
   std::string output_path;                         ///< --output; empty = standard output

@@ -136,6 +136,8 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
     total.out_failures += s.out_failures;
     total.cycles_failures += s.cycles_failures;
     total.checksum += s.checksum;
+    total.energy_pj += s.energy_pj;  // each shard from a reset device: their sum
+    total.energy_bus_pj += s.energy_bus_pj;
     const Json& t = p->json.at("timing");
     timing.cpu_seconds += t.value("cpu_seconds", 0.0);
     timing.wall_seconds = std::max(timing.wall_seconds, t.value("wall_seconds", 0.0));

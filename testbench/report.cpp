@@ -471,6 +471,18 @@ void write_summary_text(std::ostream& out, const Summary& s, const RunDescriptio
                                  : " (measured on the pins)")
         << '\n';
   }
+  if (s.count > 0 && !variant) {  // issue 61: docs/energy.md
+    const bool drawn = run.model == "pin" || run.model == "rtl";
+    out << std::fixed << std::setprecision(1) << "  energy: " << s.energy_pj / static_cast<double>(s.count)
+        << " pJ per result, " << s.energy_pj / 1000 << " nJ in all ("
+        << (drawn ? "the drawn device" : "the synchronous device")
+        << "'s gate-level figures: docs/energy.md)\n";
+    if (s.energy_bus_pj != 0)
+      out << "  TLM target's energy: " << (s.energy_pj + s.energy_bus_pj) / static_cast<double>(s.count)
+          << " pJ per result, " << (s.energy_pj + s.energy_bus_pj) / 1000
+          << " nJ in all (the operations, the register reads and writes, every clock)\n";
+    out.flags(flags);
+  }
   if (!s.failure_traces.empty()) {
     out << "  waveforms of failing operations (each with the one before it; times are the replay's):\n";
     for (const std::string& file : s.failure_traces) out << "    " << file << '\n';

@@ -361,8 +361,21 @@ class TlmInitiator : public sc_core::sc_module {
     SPECULAR_HAS_PROCESS(TlmInitiator);
     socket_.bind(target_.socket);
     target_.done_irq(irq_);
+    // The power trace (issue 61): for the CSV and for the target's view in a VCD.
+    if (settings.power_window || !settings.vcd_base.empty()) {
+      target_.trace_power(sc_core::sc_time(static_cast<double>(settings.power_window_ps), sc_core::SC_PS));
+      if (settings.power_window)
+        target_.on_power_window([callback = settings.power_window, window_ns = settings.power_window_ps / 1000.0,
+                                 pj = 0.0](const sc_core::sc_time& end, double mw) mutable {
+          pj += mw * window_ns;  // mW x ns = pJ
+          callback(end.to_seconds() * 1e9, mw, pj);
+        });
+    }
     SC_THREAD(drive);
   }
+
+  /// The target, for its trace and its energy.
+  const SpecularLtTarget& target() const { return target_; }
 
   std::exception_ptr failure;
 
@@ -406,8 +419,16 @@ void run_tlm_model(const RunSettings& settings, const OperandSource& source,
                    const ResultSink& sink) {
   sc_core::sc_report_handler::set_handler(kernel_reports_to_stderr);
   TlmInitiator initiator("tb", settings, source, sink);
+  sc_core::sc_trace_file* vcd = nullptr;
+  if (!settings.vcd_base.empty()) {  // the target's view (waveforms/specular_tlm.gtkw)
+    vcd = sc_core::sc_create_vcd_trace_file(settings.vcd_base.c_str());
+    vcd->set_time_unit(1, sc_core::SC_PS);
+    initiator.target().trace(vcd);
+  }
   sc_core::sc_start();
+  if (vcd != nullptr) sc_core::sc_close_vcd_trace_file(vcd);
   if (initiator.failure) std::rethrow_exception(initiator.failure);
+  if (settings.tlm_energy) settings.tlm_energy(initiator.target().energy());
 }
 
 }  // namespace

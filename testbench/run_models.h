@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "specular/core.h"
+#include "specular/energy/energy_meter.h"
 
 namespace specular {
 namespace tb {
@@ -66,6 +67,13 @@ struct RunSettings {
   /// them untraced, to set the device's state), into the file base it names
   /// (specular_tb --trace-failures). Empty: nothing is replayed.
   std::function<std::vector<std::pair<std::uint64_t, std::string>>()> replays;
+  /// tlm (issue 61): the power trace's window, and what each window gives: its end
+  /// (ns), its mean power (mW), the energy so far (pJ). Empty: no power trace (unless
+  /// vcd_base asks for the target's view, which holds it).
+  std::uint64_t power_window_ps = 1000000;
+  std::function<void(double end_ns, double power_mw, double energy_pj)> power_window;
+  /// tlm: the target's energy tally once the run is over.
+  std::function<void(const energy::EnergyTally&)> tlm_energy;
 };
 
 /// Replaces `chunk` with up to `max` next operations; returns false when none are left.

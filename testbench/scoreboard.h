@@ -61,6 +61,11 @@ struct Summary {
   std::uint64_t checksum = 0;
   std::vector<std::string> failure_traces;  ///< --trace-failures: the files written
   std::size_t failure_traces_left_out = 0;  ///< failures past --trace-failures-max
+  /// Issue 61: the operations' energy in pJ, as the model's device spends it at gate
+  /// level (energy::OperationEnergy; 0 for a design variant, which has no figures).
+  double energy_pj = 0;
+  /// tlm: the rest of the TLM target's energy (register reads and writes, clocks).
+  double energy_bus_pj = 0;
   bool pass() const { return count > 0 && failures == 0; }
 };
 

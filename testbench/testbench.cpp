@@ -190,6 +190,20 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
     }
   } fst_source{convert ? settings.vcd_base + ".vcd" : std::string()};
   settings.real_views = o.real_views;
+  // Issue 61: the TLM target's power trace, one CSV row per window.
+  std::optional<AtomicOutputStream> power_file;
+  settings.power_window_ps = o.power_window_ns * 1000;
+  if (!o.power_csv_path.empty()) {
+    power_file.emplace(o.power_csv_path, "--power-csv");
+    power_file->stream() << "end_ns,power_mw,energy_pj\n";
+    settings.power_window = [&power_file](double end_ns, double mw, double pj) {
+      power_file->stream() << end_ns << ',' << mw << ',' << pj << '\n';
+    };
+  }
+  double tlm_bus_pj = 0;
+  settings.tlm_energy = [&tlm_bus_pj](const energy::EnergyTally& t) {
+    tlm_bus_pj = t.read_pj + t.write_pj + t.clock_pj;
+  };
   settings.trace_window = o.trace_window;
   settings.trace_first = o.trace_first;
   settings.trace_count = o.trace_count;
@@ -215,6 +229,10 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   Scoreboard scoreboard = o.variant.empty() ? Scoreboard(o.config, latency_cycles(settings.model))
                                              : Scoreboard::for_variant(o.config);
   std::uint64_t index = 0;  // of the next result in the run
+  // Issue 61: the operations' energy, from the results as the model gave them.
+  const bool drawn = settings.model == Model::pin || settings.model == Model::rtl;
+  energy::EnergyMeter meter(drawn ? energy::Calibration::drawn_device : energy::Calibration::synchronous_device,
+                            Formats(o.config.widths));
   // Rows printed on the same terminal would land in the middle of the progress line.
   const bool rows_on_terminal = !output_file && &out == &std::cout && ::isatty(STDOUT_FILENO) == 1 &&
                                 (o.format != OutputFormat::text || description.text_rows);
@@ -242,6 +260,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
       if (tap) tap(stimuli[i], result, measured);
       const Comparison c = scoreboard.compare(stimuli[i], result, measured);
       scoreboard.record(c);
+      if (settings.model != Model::variant) meter.operation(stimuli[i].operands, result);
       report->row(c);
       if (!c.pass() && !o.failure_dir.empty()) {
         Summary& summary = scoreboard.summary();
@@ -264,6 +283,10 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
   const auto started = std::chrono::steady_clock::now();
   run_operations(settings, source, sink);
   progress.finish();
+  if (settings.model != Model::variant) {
+    scoreboard.summary().energy_pj = meter.tally(0).operation_pj;
+    scoreboard.summary().energy_bus_pj = tlm_bus_pj;
+  }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   report->end(scoreboard.summary(), seconds);
@@ -280,6 +303,7 @@ int run(const Options& o, std::ostream& out, std::ostream& err, const ResultTap&
     partial_file->commit();
   }
   if (output_file) output_file->commit();
+  if (power_file) power_file->commit();
   if (vcd_file && convert) convert_to_fst(vcd2fst, settings.vcd_base + ".vcd", vcd_file->temp_path());
   if (vcd_file) vcd_file->commit();
   return scoreboard.summary().pass() ? exit_pass : exit_out_of_tolerance;

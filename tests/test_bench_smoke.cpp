@@ -67,7 +67,7 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
                             "tlm_lt_batch", "tlm_pin_batch", "pin_growth_1k", "pin_growth_10k",
                             "pin_growth_100k", "vcd_growth_10k", "pow_end", "rtl_sync_cpp",
                             "rtl_sync_cpp_stream", "rtl_sync_general_cpp_stream",
-                            "rtl_general_cpp_stream"}) {
+                            "rtl_general_cpp_stream", "tlm_lt_quantum_energy_off", "tlm_lt_batch_energy_off"}) {
     EXPECT_EQ(names.count(std::string(model) + "_rate"), 1u) << model;
     EXPECT_EQ(names.count(std::string(model) + "_peak_memory"), 1u) << model;
   }
@@ -87,6 +87,8 @@ TEST(BenchSmoke, QuickRunPrintsEveryFigureAndIsBitExact) {
                              "target_pin_stream_vs_pow", "target_vcd_slowdown", "target_tlm_lt_batch_vs_pow",
                              "target_rtl_sync_cpp_stream_vs_pow", "target_rtl_sync_cpp_stream_rate",
                              "target_rtl_sync_vs_pin", "target_rtl_sync_stream_vs_pin_stream",
+                             "energy_slowdown_quantum", "energy_slowdown_batch",
+                             "target_energy_slowdown_quantum", "target_energy_slowdown_batch",
                              "targets_met", "bit_exact"})
     EXPECT_EQ(names.count(figure), 1u) << figure;
 

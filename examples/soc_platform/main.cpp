@@ -10,7 +10,8 @@
 // docs/integration.md §6); consume under --strict aborts at the first START.
 // Prints one line and exits 0 when every result equals Core's and every operation
 // raised one interrupt; 1 otherwise; 2 for a bad command line; a strict assert that
-// fails aborts.
+// fails aborts. A second line gives the IP's energy over the run (issue 61,
+// docs/energy.md): what a power-aware platform reads from SpecularTarget::energy().
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
@@ -85,5 +86,16 @@ int sc_main(int argc, char* argv[]) {
             << (target == soc::Target::pin ? std::string(", pin delay ") + specular::to_string(pin_delay) : "")
             << (cpu.failure.empty() ? "" : ", failure: " + cpu.failure) << ": "
             << (pass ? "PASS" : "FAIL") << std::endl;
+  // What the IP's work cost, as its gate-level figures price it (docs/energy.md).
+  const specular::energy::EnergyTally e = platform.ip->energy();
+  const double ops = static_cast<double>(e.operations > 0 ? e.operations : 1);
+  const double ns = sc_core::sc_time_stamp().to_seconds() * 1e9;
+  std::cout << "soc_platform: energy " << e.total_pj() / 1000 << " nJ, " << e.total_pj() / ops
+            << " pJ per operation (operations " << e.operation_pj / ops << ", register reads "
+            << e.read_pj / ops << ", writes " << e.write_pj / ops << ", clocks " << e.clock_pj / ops
+            << "; the " << (platform.ip->energy_calibration() == specular::energy::Calibration::drawn_device
+                                ? "drawn"
+                                : "synchronous")
+            << " device's figures), mean power " << (ns > 0 ? e.total_pj() / ns : 0.0) << " mW" << std::endl;
   return pass ? 0 : 1;
 }

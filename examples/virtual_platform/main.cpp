@@ -135,5 +135,13 @@ int sc_main(int argc, char** argv) {
             << " operations through the IP in " << cpu.ip_bursts << " BATCH_COS bursts; simulated "
             << cpu.finished_at << " (IP annotated " << cpu.ip_busy << "); wrote " << args.out
             << "\n";
+  // What the frame cost the IP (issue 61, docs/energy.md), at the kernel's end time.
+  const energy::EnergyTally e = ip.energy();
+  const double pixels = static_cast<double>(Frame::panel_count) * frame.size * frame.size;
+  std::cout << "specular_vp: energy " << e.total_pj() / pixels << " pJ per pixel, " << e.total_pj() / 1e6
+            << " uJ per frame (operations " << e.operation_pj / 1e6 << " uJ, register reads and writes "
+            << (e.read_pj + e.write_pj) / 1e6 << " uJ, " << e.clocks << " clocks " << e.clock_pj / 1e6
+            << " uJ; the synchronous device's gate-level figures), mean power "
+            << e.total_pj() / (cpu.finished_at.to_seconds() * 1e9) << " mW\n";
   return 0;
 }

@@ -156,7 +156,10 @@ tlm::tlm_response_status SpecularAxiTarget::transfer(const Attempt& attempt, std
                                                      std::uint32_t strobes) {
   const auto axi_address = static_cast<std::uint32_t>(address);
   const std::uint32_t resp = is_write ? ip_->write(axi_address, word, strobes) : ip_->read(axi_address, word);
-  if (resp == axi_okay) return tlm::TLM_OK_RESPONSE;
+  if (resp == axi_okay) {
+    if (is_write) charge_write(address, word, strobes);
+    return tlm::TLM_OK_RESPONSE;
+  }
   ErrorCause cause = ErrorCause::address;
   if (resp == axi_slverr) {
     std::uint32_t status = 0;
@@ -173,6 +176,36 @@ tlm::tlm_response_status SpecularAxiTarget::transfer(const Attempt& attempt, std
   const tlm::tlm_response_status status = resp == axi_decerr ? tlm::TLM_ADDRESS_ERROR_RESPONSE : response_for(cause);
   report_refusal(status, cause, axi_address, attempt, why);
   return status;
+}
+
+void SpecularAxiTarget::charge_write(std::uint64_t address, std::uint32_t word, std::uint32_t strobes) {
+  energy::EnergyMeter* const meter = energy_meter();
+  if (meter == nullptr) return;
+  const RegisterInfo* row = decode(address & ~std::uint64_t{3});
+  if (row == nullptr) return;
+  const Reg reg = row->reg == Reg::operands ? operand_register(static_cast<std::uint32_t>(address - row->offset) / 4)
+                                            : row->reg;
+  std::uint32_t mask = 0;
+  for (unsigned lane = 0; lane < 4; ++lane)
+    if (strobes & (1u << lane)) mask |= 0xFFu << (8 * lane);
+  const auto merge = [&](std::uint32_t& held) { held = (held & ~mask) | (word & mask); };
+  switch (reg) {
+    case Reg::cos: return merge(operands_.cos_word);
+    case Reg::n: return merge(operands_.n_word);
+    case Reg::r: return merge(operands_.rgb_words[0]);
+    case Reg::g: return merge(operands_.rgb_words[1]);
+    case Reg::b: return merge(operands_.rgb_words[2]);
+    case Reg::control:
+      if ((word & mask & control_bits::start) != 0) {
+        Operands op;
+        op.cos = operands_.cos_word;
+        op.n = operands_.n_word;
+        for (int ch = 0; ch < 3; ++ch) op.rgb[ch] = operands_.rgb_words[ch];
+        meter->operation(config(), op);
+      }
+      return;
+    default: return;
+  }
 }
 
 void SpecularAxiTarget::b_transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay) {

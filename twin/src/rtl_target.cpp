@@ -8,6 +8,7 @@ SpecularRtlTarget::SpecularRtlTarget(sc_core::sc_module_name name, const Config&
                                      const sc_core::sc_time& clock_period)
     : SpecularTarget(name, config, clock_period), rtl_(std::make_unique<RtlCycleModel>(config)) {
   rtl_->reset();
+  set_energy_calibration(energy::Calibration::drawn_device);  // Fig. 2 as drawn, as pin
 }
 
 SpecularRtlTarget::~SpecularRtlTarget() = default;

@@ -23,6 +23,7 @@ SpecularPinTarget::SpecularPinTarget(sc_core::sc_module_name name, const Config&
       harness("harness", config, settings.clock_period, settings.real_views, ClockMode::on_demand),
       delay_policy_(settings.delay) {
   SPECULAR_HAS_PROCESS(SpecularPinTarget);
+  set_energy_calibration(energy::Calibration::drawn_device);  // the netlist of Fig. 2
   SC_METHOD(on_reset);
   sensitive << harness.pin29_reset_n.negedge_event();
   dont_initialize();

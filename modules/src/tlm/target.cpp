@@ -1,5 +1,6 @@
 #include "specular/tlm/target.h"
 
+#include <cmath>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -104,8 +105,12 @@ SpecularTarget::SpecularTarget(sc_core::sc_module_name name, const Config& confi
   word(Reg::pin19_h) = static_cast<std::uint32_t>(pin19_code(config_));
   word(Reg::pin20_a) = static_cast<std::uint32_t>(pin20_code(config_));
 
-  socket.register_b_transport(this, &SpecularTarget::b_transport);
+  socket.register_b_transport(this, &SpecularTarget::transport);
   socket.register_transport_dbg(this, &SpecularTarget::transport_dbg);
+
+  meter_ = std::make_unique<energy::EnergyMeter>(calibration_, formats_);
+
+  SC_THREAD(sample_power);
 
   done_irq.initialize(false);
   SC_METHOD(drive_irq);
@@ -441,6 +446,13 @@ void SpecularTarget::run(const std::uint32_t* cos, std::size_t count, std::uint3
   done_ = false;
   irq_event_.notify(delay);  // done_irq falls when the operation starts
   execute(shared, cos, count, out, last_, delay);
+  if (meter_ && !charges_itself_) {
+    Operands op = shared;
+    for (std::size_t i = 0; i < count; ++i) {
+      op.cos = cos[i];
+      meter_->operation(config_, op);
+    }
+  }
   busy_ = false;
   done_ = true;
   done_at_ = sc_core::sc_time_stamp() + delay;
@@ -454,6 +466,96 @@ void SpecularTarget::run(const std::uint32_t* cos, std::size_t count, std::uint3
   word(Reg::reg9_pass2_hi) = high_word(last_.reg9_pass2);
   word(Reg::rom38_k) = low_word(last_.rom38_k);
   word(Reg::norm39) = low_word(last_.norm39);
+}
+
+// ---- energy and power (docs/energy.md) ----------------------------------------------
+
+void SpecularTarget::transport(tlm::tlm_generic_payload& tx, sc_time& delay) {
+  b_transport(tx, delay);
+  if (!meter_ || tx.get_response_status() != tlm::TLM_OK_RESPONSE) return;
+  // A bus beat per word: AXI4-Lite carries 32 bits a transfer, and the IP's figures
+  // are per transfer.
+  const std::uint64_t beats = (tx.get_data_length() + 3) / 4;
+  if (tx.get_command() == tlm::TLM_READ_COMMAND) meter_->reads(beats);
+  else if (tx.get_command() == tlm::TLM_WRITE_COMMAND) meter_->writes(beats);
+  if (power_window_ != sc_core::SC_ZERO_TIME) bin_energy(sc_core::sc_time_stamp() + delay);
+}
+
+double SpecularTarget::charged_pj() const {
+  if (!meter_) return 0;
+  const energy::EnergyTally t = meter_->tally(0);
+  return t.total_pj();
+}
+
+energy::EnergyTally SpecularTarget::energy() const {
+  if (!meter_) return energy::EnergyTally{};
+  return meter_->tally(sc_core::sc_time_stamp() / period_);
+}
+
+void SpecularTarget::set_energy_model(bool on) {
+  if (on && !meter_) meter_ = std::make_unique<energy::EnergyMeter>(calibration_, formats_);
+  if (!on) meter_.reset();
+  binned_pj_ = charged_pj();
+}
+
+void SpecularTarget::set_energy_calibration(energy::Calibration calibration) {
+  calibration_ = calibration;
+  if (meter_) meter_ = std::make_unique<energy::EnergyMeter>(calibration_, formats_);
+  binned_pj_ = 0;
+}
+
+void SpecularTarget::trace_power(const sc_time& window) {
+  if (window <= sc_core::SC_ZERO_TIME)
+    throw std::invalid_argument("TLM target: power window " + window.to_string() + " must be positive");
+  if (power_window_ != sc_core::SC_ZERO_TIME)
+    throw std::invalid_argument("TLM target: the power trace is already on (window " +
+                                power_window_.to_string() + ")");
+  power_window_ = window;
+  binned_pj_ = charged_pj();
+  power_on_.notify(sc_core::SC_ZERO_TIME);
+}
+
+void SpecularTarget::bin_energy(const sc_time& at) {
+  const double now_pj = charged_pj();
+  const double pj = now_pj - binned_pj_;
+  binned_pj_ = now_pj;
+  if (pj == 0) return;
+  // power_bins_.front() is the window that starts at window_start_ (sample_power()
+  // closes it next); energy annotated before it goes to it.
+  const std::size_t index =
+      at > window_start_ ? static_cast<std::size_t>(std::floor((at - window_start_) / power_window_)) : 0;
+  if (power_bins_.size() <= index) power_bins_.resize(index + 1, 0.0);
+  power_bins_[index] += pj;
+}
+
+void SpecularTarget::sample_power() {
+  while (power_window_ == sc_core::SC_ZERO_TIME) sc_core::wait(power_on_);
+  const double clocks_per_window = power_window_ / period_;
+  window_start_ = sc_core::sc_time_stamp();
+  for (;;) {
+    sc_core::wait(power_window_);
+    double pj = 0;
+    if (meter_) pj = clocks_per_window * energy::bus_table.idle_clock_pj;
+    if (!power_bins_.empty()) {
+      if (meter_) pj += power_bins_.front();
+      power_bins_.pop_front();
+    }
+    window_start_ += power_window_;
+    energy_pj_ += pj;
+    const double mw = pj / (power_window_.to_seconds() * 1e9);  // pJ / ns = mW
+    power_mw_.write(mw);
+    for (const auto& callback : power_callbacks_) callback(sc_core::sc_time_stamp(), mw);
+  }
+}
+
+void SpecularTarget::trace(sc_core::sc_trace_file* file) const {
+  const std::string scope = std::string(name()) + ".";
+  sc_core::sc_trace(file, busy_, scope + "status_busy");
+  sc_core::sc_trace(file, done_, scope + "status_done");
+  sc_core::sc_trace(file, error_, scope + "status_error");
+  sc_core::sc_trace(file, irq_level_, scope + "done_irq");
+  sc_core::sc_trace(file, power_mw_, scope + "power_mw");
+  sc_core::sc_trace(file, energy_pj_, scope + "energy_pj");
 }
 
 void SpecularTarget::rtl_done_irq(bool level, const sc_core::sc_time& delay) {

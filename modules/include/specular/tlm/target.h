@@ -9,13 +9,16 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <tlm>
 #include <tlm_utils/simple_target_socket.h>
 
 #include "specular/core.h"
+#include "specular/energy/energy_meter.h"
 #include "specular/systemc.h"
 #include "specular/tlm/register_map.h"
 
@@ -73,6 +76,38 @@ class SpecularTarget : public sc_core::sc_module {
   /// The device's clock period T that the latencies are counted in.
   const sc_core::sc_time& clock_period() const { return period_; }
 
+  /// The energy model (docs/energy.md): the energy spent so far, at the kernel's
+  /// current time: the operations (charged with energy_calibration()'s gate-level fit),
+  /// the register reads and writes, and every clock period since time 0 (the IP has no
+  /// clock gating). All zero when the model is off.
+  energy::EnergyTally energy() const;
+  /// Whose gate-level figures the operations are charged: the drawn device for `pin`
+  /// and `rtl`, the synchronous device (the IP's datapath) for the others.
+  energy::Calibration energy_calibration() const { return calibration_; }
+  /// Switches the energy model on (the default) or off; off, an access costs one test
+  /// more than without it. Switching keeps what was counted.
+  void set_energy_model(bool on);
+  /// Whether the energy model is on.
+  bool energy_model() const { return meter_ != nullptr; }
+  /// Starts the power trace: power_mw() becomes, at the end of each `window` (> 0), the
+  /// mean power over it; an access's energy counts in the window of its annotated end
+  /// (sc_time_stamp() + delay), so temporal decoupling shifts nothing. Call once, before
+  /// or during the simulation (the windows start then); throws
+  /// std::invalid_argument for a window ≤ 0 or a second call.
+  void trace_power(const sc_core::sc_time& window);
+  /// The power over the last window in mW (0 before the first window ends); trace it
+  /// with sc_trace beside STATUS and done_irq (waveforms/specular_tlm_power.gtkw).
+  const sc_core::sc_signal<double>& power_mw() const { return power_mw_; }
+  /// Traces the target's view into `file` under this module's name: STATUS's busy,
+  /// done and error, done_irq, power_mw and energy_pj (the sum of the windows' energy
+  /// so far; both need trace_power()). waveforms/specular_tlm.gtkw shows them.
+  void trace(sc_core::sc_trace_file* file) const;
+  /// Called at the end of each power window with its end time and mean power in mW
+  /// (for a CSV, a plot, a platform's own power bus); works without tracing.
+  void on_power_window(std::function<void(const sc_core::sc_time&, double)> callback) {
+    power_callbacks_.push_back(std::move(callback));
+  }
+
   /// Start → results valid for `count` pipelined operations, in clock periods:
   /// 2.5 for one (spec §3, protocol Decision), 2 more per further operation while
   /// n and R, G, B stay unchanged (the pin model's streaming interval).
@@ -82,6 +117,16 @@ class SpecularTarget : public sc_core::sc_module {
   /// Throws std::invalid_argument if a register-visible format does not fit 32 bits.
   SpecularTarget(sc_core::sc_module_name name, const Config& config,
                  const sc_core::sc_time& clock_period);
+
+  /// The meter the operations are charged to, or nullptr when the model is off. An
+  /// implementation whose execute() charges each operation itself (the results at
+  /// hand: `lt`) says so with charges_operations_itself(); otherwise run() charges them,
+  /// recomputed by the meter's own Core (pin, rtl, rtl_sync: bit-identical results).
+  energy::EnergyMeter* energy_meter() { return meter_.get(); }
+  /// See energy_meter().
+  void charges_operations_itself() { charges_itself_ = true; }
+  /// The calibration charged (the constructor's default: the synchronous device).
+  void set_energy_calibration(energy::Calibration calibration);
 
   /// Runs `count` operations: cos λ from `cos[i]`, n and R, G, B from `shared`.
   /// Writes pins 24–26 of operation i to out[3i..3i+2] (32-bit two's complement) and
@@ -178,6 +223,25 @@ class SpecularTarget : public sc_core::sc_module {
   std::uint32_t reported_causes_ = 0;  ///< bit c: a refusal with cause c was reported
   bool irq_level_ = false;
   std::vector<std::function<void(bool)>> irq_callbacks_;
+
+  /// The socket's b_transport: the implementation's, then the bus beats it cost.
+  void transport(tlm::tlm_generic_payload& tx, sc_core::sc_time& delay);
+  /// Adds what was charged since the last call to the power window of `at`.
+  void bin_energy(const sc_core::sc_time& at);
+  void sample_power();  // the power trace's process
+  double charged_pj() const;  // operations, reads and writes so far (no clocks)
+
+  energy::Calibration calibration_ = energy::Calibration::synchronous_device;
+  std::unique_ptr<energy::EnergyMeter> meter_;
+  bool charges_itself_ = false;
+  sc_core::sc_time power_window_ = sc_core::SC_ZERO_TIME;  ///< zero: no power trace
+  std::deque<double> power_bins_;  ///< pJ of windows from the current one on
+  sc_core::sc_time window_start_;  ///< where power_bins_.front()'s window starts
+  sc_core::sc_event power_on_;     ///< trace_power() was called
+  double binned_pj_ = 0;           ///< charged_pj() when last binned
+  sc_core::sc_signal<double> power_mw_{"power_mw", 0.0};
+  double energy_pj_ = 0;           ///< the windows' energy so far (traced)
+  std::vector<std::function<void(const sc_core::sc_time&, double)>> power_callbacks_;
 
   /// Binds done_irq to a signal of its own if nobody bound it by the end of
   /// elaboration (a child module, so that a derived target's own

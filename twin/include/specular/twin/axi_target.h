@@ -67,7 +67,18 @@ class SpecularAxiTarget : public SpecularTarget {
   tlm::tlm_response_status transfer(const Attempt& attempt, std::uint64_t address, bool is_write,
                                     std::uint32_t& word, std::uint32_t strobes);
 
+  /// The energy model's view of a write the RTL took: the operand registers as the
+  /// RTL holds them (its merges of sub-word writes), and each START charged on them.
+  void charge_write(std::uint64_t address, std::uint32_t word, std::uint32_t strobes);
+
   std::unique_ptr<AxiIpModel> ip_;
+  /// COS, N, R, G, B as last written (their reset values at first): the energy
+  /// model's operands, since the registers live in the RTL.
+  struct HeldOperands {
+    std::uint32_t cos_word = info(Reg::cos).reset;
+    std::uint32_t n_word = info(Reg::n).reset;
+    std::array<std::uint32_t, 3> rgb_words{info(Reg::r).reset, info(Reg::g).reset, info(Reg::b).reset};
+  } operands_;
 };
 
 }  // namespace specular

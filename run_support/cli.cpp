@@ -1,6 +1,5 @@
 #include "cli.h"
 
-#include <algorithm>
 #include <iostream>
 #include <sstream>
 
@@ -26,26 +25,6 @@ std::string number(double value) {
   return s.str();
 }
 
-/// CLI11's own messages in the house's words (the tests of bad input match these).
-std::string house_message(const CLI::Error& e) {
-  const std::string text = e.what();
-  if (dynamic_cast<const CLI::ExtrasError*>(&e)) {  // its name may be the app's
-    // "The following argument(s) was/were not expected: A B": the first one named.
-    const auto list = text.find(": ");
-    std::string first = list == std::string::npos ? text : text.substr(list + 2);
-    first = first.substr(0, first.find(' '));
-    if (first.size() > 1 && first[0] == '-')
-      return "unknown option '" + first + "' (see --help)";
-    return "unexpected argument '" + first + "' (see --help)";
-  }
-  // "--out: 1 required TEXT missing": an option at the end of the line without its value.
-  const auto colon = text.find(": ");
-  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) && colon != std::string::npos &&
-      text.size() > 8 && text.compare(text.size() - 8, 8, " missing") == 0)
-    return "option " + text.substr(0, colon) + " needs a value (see --help)";
-  return text;
-}
-
 constexpr std::size_t help_width = 100, name_column = 30;
 
 /// `text` broken at blanks into lines of at most `width` characters; a text that
@@ -64,34 +43,71 @@ std::string wrapped(const std::string& text, std::size_t width) {
   return out + line;
 }
 
-/// Every option's help (and the groups') wrapped to the help's width.
+}  // namespace
+
 void wrap_help(CLI::App& app) {
   for (CLI::Option* o : app.get_options())
     o->description(wrapped(o->get_description(), help_width - name_column));
   for (CLI::App* group : app.get_subcommands([](CLI::App*) { return true; })) wrap_help(*group);
 }
 
-}  // namespace
+std::string error_text(const CLI::App& app, const CLI::Error& e, const std::vector<std::string>& args) {
+  const std::string text = e.what();
+  const auto colon = text.find(": ");
+  if (dynamic_cast<const CLI::ExtrasError*>(&e)) {  // its get_name() may be the app's
+    // "The following argument(s) was/were not expected: B A": the first one named (the
+    // list is in reverse).
+    std::string first = colon == std::string::npos ? text : text.substr(colon + 2);
+    first = first.substr(first.rfind(' ') == std::string::npos ? 0 : first.rfind(' ') + 1);
+    const bool positionals = !app.get_options([](const CLI::Option* o) { return o->get_positional(); }).empty();
+    if ((first.size() > 1 && first[0] == '-') || !positionals)
+      return "unknown option '" + first + "' (see --help)";
+    return "unexpected argument '" + first + "' (see --help)";
+  }
+  const std::string extra_key = "INI was not able to parse ";
+  if (dynamic_cast<const CLI::ConfigError*>(&e) && text.rfind(extra_key, 0) == 0)
+    return "--config: '" + text.substr(extra_key.size()) + "' in the file is not an option (see --help)";
+  if (dynamic_cast<const CLI::ArgumentMismatch*>(&e)) {
+    const auto ends = [&](const std::string& tail) {
+      return text.size() > tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+    };
+    // "--out: 1 required TEXT missing": an option at the end of the line without its value.
+    if (colon != std::string::npos && ends(" missing"))
+      return "option " + text.substr(0, colon) + " needs a value (see --help)";
+    // "--sweep was given a disallowed flag override": --sweep=yes.
+    const std::string override_tail = " was given a disallowed flag override";
+    if (ends(override_tail)) {
+      std::string name = text.substr(0, text.size() - override_tail.size());
+      if (name.rfind('-', 0) != 0) name = "--" + name;  // CLI11 names the flag without its dashes
+      std::string value;
+      for (const std::string& a : args)
+        if (a.rfind(name + "=", 0) == 0) value = a.substr(name.size() + 1);
+      return name + " takes no value (got '" + value + "')";
+    }
+    // "--n: At Most 1 required but received 2": given twice.
+    if (colon != std::string::npos && text.find("At Most 1 required", colon) != std::string::npos)
+      return "option " + text.substr(0, colon) + " is given more than once";
+  }
+  return text;
+}
 
 void house_rules(CLI::App& app, const std::string& footer) {
   app.set_version_flag("--version", app.get_name() + " " + version(), "print the version and exit");
   app.set_help_flag("-h,--help", "print this help and exit");
-  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
-    return a->get_name() + ": error: " + house_message(e) + "\n";
-  });
-  app.get_formatter()->column_width(30);
+  app.get_formatter()->column_width(name_column);
+  app.allow_config_extras(CLI::config_extras_mode::error);  // a misspelt key is an error, not ignored
   if (!footer.empty()) app.footer(wrapped(footer, help_width));
 }
 
 int run(CLI::App& app, std::vector<std::string> args, const std::function<int()>& body) {
   wrap_help(app);
   try {
-    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
-    app.parse(args);
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+    app.parse(reversed);
   } catch (const CLI::Success& e) {
     return app.exit(e);  // --help, --version: standard output, status 0
   } catch (const CLI::ParseError& e) {
-    app.exit(e);  // the house message on standard error
+    std::cerr << app.get_name() << ": error: " << error_text(app, e, args) << '\n';
     return 2;
   } catch (const tb::UsageError& e) {  // an option's callback refused its value
     std::cerr << app.get_name() << ": error: " << e.what() << '\n';

@@ -35,6 +35,15 @@ int run(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
 /// The same for a tool that already holds its arguments (argv[1..]).
 int run(CLI::App& app, std::vector<std::string> args, const std::function<int()>& body);
 
+/// Every option's help (and its groups') wrapped to the help's width, 100 columns; a
+/// text with line breaks of its own is left as written. run() does it before parsing.
+void wrap_help(CLI::App& app);
+
+/// CLI11's message for `e` in the house's words ("unknown option '--x'", "option --out
+/// needs a value", "--sweep takes no value (got 'yes')", "option --n is given more than
+/// once"); `args`, the command line, to quote a value.
+std::string error_text(const CLI::App& app, const CLI::Error& e, const std::vector<std::string>& args);
+
 // Checks of a value as the user typed it, through parse_values.h's strict conversions
 // (the whole text or nothing; "010" is ten): the message names the value and the
 // allowed range. Integers are rewritten to plain decimal for CLI11's own conversion.

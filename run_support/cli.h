@@ -61,7 +61,7 @@ CLI::Validator one_of(const std::vector<std::string>& names, const std::string& 
 
 /// A check through `parse`, one of the project's parsers (parse_shard, parse_constants,
 /// ...): the text is good when it does not throw, and its message is the error (a leading
-/// "<option>: " of it dropped, CLI11 names the option).
+/// "<option>: " or "<option> = " of it dropped, CLI11 names the option).
 template <class Parse>
 CLI::Validator parsed_by(Parse parse) {
   return CLI::Validator(
@@ -70,11 +70,13 @@ CLI::Validator parsed_by(Parse parse) {
           parse(text);
           return {};
         } catch (const std::exception& e) {
+          // "--x: why" and "--x = 'v' why" lose their "--x" (CLI11 puts it first).
           const std::string message = e.what();
-          const auto colon = message.find(": ");
-          const bool named = message.rfind("--", 0) == 0 && colon != std::string::npos &&
-                             message.find(' ') > colon;
-          return named ? message.substr(colon + 2) : message;
+          const auto blank = message.find(' ');
+          if (message.rfind("--", 0) != 0 || blank == std::string::npos) return message;
+          if (message[blank - 1] == ':') return message.substr(blank + 1);
+          if (message.compare(blank, 3, " = ") == 0) return message.substr(blank + 3);
+          return message;
         }
       },
       "");

@@ -99,24 +99,25 @@ void house_rules(CLI::App& app, const std::string& footer) {
   if (!footer.empty()) app.footer(wrapped(footer, help_width));
 }
 
-int run(CLI::App& app, std::vector<std::string> args, const std::function<int()>& body) {
+int run(CLI::App& app, const std::vector<std::string>& args, const std::function<int()>& body,
+        std::ostream& out, std::ostream& err) {
   wrap_help(app);
   try {
     std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
     app.parse(reversed);
   } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help, --version: standard output, status 0
+    return app.exit(e, out, err);  // --help, --version: status 0
   } catch (const CLI::ParseError& e) {
-    std::cerr << app.get_name() << ": error: " << error_text(app, e, args) << '\n';
+    err << app.get_name() << ": error: " << error_text(app, e, args) << '\n';
     return 2;
   } catch (const tb::UsageError& e) {  // an option's callback refused its value
-    std::cerr << app.get_name() << ": error: " << e.what() << '\n';
+    err << app.get_name() << ": error: " << e.what() << '\n';
     return 2;
   }
   try {
     return body();
   } catch (const tb::UsageError& e) {
-    std::cerr << app.get_name() << ": error: " << e.what() << '\n';
+    err << app.get_name() << ": error: " << e.what() << '\n';
     return 2;
   }
 }

@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,10 @@ void house_rules(CLI::App& app, const std::string& footer = "");
 /// bad command line or a UsageError out of `body` prints one line and returns 2;
 /// otherwise body's status.
 int run(CLI::App& app, int argc, char** argv, const std::function<int()>& body);
-/// The same for a tool that already holds its arguments (argv[1..]).
-int run(CLI::App& app, std::vector<std::string> args, const std::function<int()>& body);
+/// The same for a tool that already holds its arguments (argv[1..]), printing to `out`
+/// (--help, --version) and `err` (the error line).
+int run(CLI::App& app, const std::vector<std::string>& args, const std::function<int()>& body,
+        std::ostream& out = std::cout, std::ostream& err = std::cerr);
 
 /// Every option's help (and its groups') wrapped to the help's width, 100 columns; a
 /// text with line breaks of its own is left as written. run() does it before parsing.

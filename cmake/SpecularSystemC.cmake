@@ -8,7 +8,7 @@
 #     SpecularUnit_SYSTEMC_* to that record: the recorded SystemC is looked for first, by
 #     the same route at the same place, and whatever SystemC the consumer ends up with
 #     must be that one, or the package is NOT FOUND with a message saying why
-#     (docs/integration.md §9). The consumer chooses another SystemC with its own
+#     (docs/integration/package.md). The consumer chooses another SystemC with its own
 #     SystemC::systemc target (found before SpecularUnit) or with SystemCLanguage_DIR.
 #
 # A SystemC is told apart by the symbol of its link-time check,
@@ -268,7 +268,7 @@ function(_specular_systemc_check_mix ours)
         message(FATAL_ERROR "Target ${target} (${folder}) links SpecularUnit's SystemC, ${ours}, "
                 "and another SystemC library beside it: ${others}. Two SystemC libraries in one "
                 "program break in SystemC's static initialisers before main runs. Link only "
-                "SystemC::systemc, the one SpecularUnit gives (docs/integration.md §9).")
+                "SystemC::systemc, the one SpecularUnit gives (docs/integration/package.md).")
       endif()
     endforeach()
   endwhile()
@@ -405,7 +405,7 @@ if(NOT TARGET SystemC::systemc)
     string(CONCAT SpecularUnit_NOT_FOUND_MESSAGE
         "SpecularUnit was built with SystemC ${_specular_built}, and ${_specular_problem}. "
         "For SpecularUnit::specular and ::twin: ${_specular_fix}. For SpecularUnit::core alone, "
-        "which needs no SystemC: find_package(SpecularUnit COMPONENTS core) (docs/integration.md §9).")
+        "which needs no SystemC: find_package(SpecularUnit COMPONENTS core) (docs/integration/package.md).")
     return()
   endif()
   message(FATAL_ERROR "SpecularUnit needs SystemC 2.3 or 3.0: ${_specular_problem}. "
@@ -436,7 +436,7 @@ if(DEFINED SpecularUnit_SYSTEMC_API)  # the installed package: the consumer's Sy
         "${_specular_found}: a library compiled against one SystemC does not link against "
         "another. Give it SystemC ${SpecularUnit_SYSTEMC_VERSION} built for ${_specular_built_cxx}: "
         "${_specular_fix}; or rebuild SpecularUnit with SystemC ${SPECULAR_SYSTEMC_VERSION} "
-        "(docs/integration.md §9).")
+        "(docs/integration/package.md).")
     return()
   endif()
   _specular_systemc_defer_mix_check("${SPECULAR_SYSTEMC_LIBRARY}")

@@ -30,6 +30,14 @@
 #                       reference, counts: the same figures, 10-20 times slower)
 #   --keep-vcd          keep the two VCDs (deleted after counting by default: up to GBs)
 #   --no-zero-delay     skip the zero-delay replay (no glitch share)
+#   --stimulus FILE     (a device top) replay these operations instead of the common
+#                       stream (gatesim.sh --stimulus's format: hex cos n r g b per line);
+#                       the report's "random operands" are then all of them
+#   --per-result        also OUT_DIR/per_result.tsv: each operation's energy (energy.py
+#                       report --per-result-out), line k the stimulus's k-th operation,
+#                       a result counted by the top's ENERGY_PER_RESULT strobe where its
+#                       gatesim.conf names one (the synchronous device: 35's rise, the end
+#                       of the operation, so that an interval is one operation's own clocks)
 #
 # OUT_DIR gets energy.json (the figures), energy.md (the table), sdf/ and zero/ (the
 # replays, energy_sdf.json, energy_zero.json, toggles_*.txt; after layout also
@@ -55,19 +63,23 @@ specular_tb="$root/build/testbench/specular_tb"
 counter="$root/build/tools/vcd_activity/specular_vcd_activity"
 keep_vcd=0
 zero=1
+stimulus=""
+per_result=0
 args=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     -h|--help) usage; exit 0 ;;
     --keep-vcd) keep_vcd=1; shift ;;
     --no-zero-delay) zero=0; shift ;;
-    --top|--netlist-dir|--period|--t-sim|--clocks-per-result|--random|--vectors-tool|--specular-tb|--counter)
+    --per-result) per_result=1; shift ;;
+    --stimulus|--top|--netlist-dir|--period|--t-sim|--clocks-per-result|--random|--vectors-tool|--specular-tb|--counter)
       [[ $# -ge 2 ]] || fail_args "$1 needs a value"
       case "$1" in
         --top) top="$2" ;; --netlist-dir) netlist_dir="$2" ;; --period) period="$2" ;;
         --t-sim) t_sim="$2" ;; --clocks-per-result) cpr="$2" ;;
         --random) random="$2" ;; --vectors-tool) vectors_tool="$2" ;; --specular-tb) specular_tb="$2" ;;
         --counter) counter="$2" ;;
+        --stimulus) stimulus="$2" ;;
       esac
       shift 2 ;;
     -*) fail_args "unknown option '$1'" ;;
@@ -81,6 +93,8 @@ number='^[0-9]+([.][0-9]+)?$'
 [[ -z "$t_sim" ]] || { [[ "$t_sim" =~ $number ]] && (( $(echo "$t_sim > 0 && $t_sim <= 1000" | bc) )); } \
   || fail_args "--t-sim '$t_sim' is not a period in ns above 0 and at most 1000"
 [[ -z "$random" || ( "$random" =~ ^[0-9]{1,4}$ && 10#$random -le 5000 ) ]] || fail_args "--random '$random' is not a count from 0 to 5000"
+[[ -z "$stimulus" || -f "$stimulus" ]] || fail_args "--stimulus '$stimulus' is no file"
+[[ -z "$stimulus" ]] || stimulus="$(cd "$(dirname "$stimulus")" && pwd)/$(basename "$stimulus")"
 out="${args[0]}"
 rom_dir="${args[1]:-$root/build/rtl/rom/default}"
 top_dir="$here/silicon/$top"
@@ -121,16 +135,24 @@ fi
 ENERGY_RESULTS=()
 ENERGY_LEAD_RESULTS=0
 ENERGY_INSTEAD=""
+ENERGY_PER_RESULT=()
 source "$top_dir/gatesim.conf"   # ENERGY_RESULTS: how a result shows (per top); results before the stream's
 random_from=$((18 + ENERGY_LEAD_RESULTS))
 [[ ${#ENERGY_RESULTS[@]} -gt 0 ]] || fail_args "top '$top' names no result strobe (ENERGY_RESULTS in its gatesim.conf)${ENERGY_INSTEAD:+; $ENERGY_INSTEAD}"
 strobe=("${ENERGY_RESULTS[@]}")
+[[ $per_result -eq 0 || ${#ENERGY_PER_RESULT[@]} -eq 0 ]] || strobe=("${ENERGY_PER_RESULT[@]}")
+[[ $variant -eq 0 || -z "$stimulus" ]] || fail_args "--stimulus is for a device top; a variant replays its model's vectors"
 if [[ $variant -eq 1 ]]; then
   vec_opts=(--random "$random")
   [[ -n "$cpr" ]] || cpr=1
 else
-  "$vectors_tool" patent --count $((18 + random)) --seed 1 --out "$out/stream.txt" > "$out/stream.log" 2>&1 \
-    || { echo "energy.sh: writing the common stream failed; see $out/stream.log" >&2; exit 1; }
+  if [[ -n "$stimulus" ]]; then
+    [[ "$stimulus" -ef "$out/stream.txt" ]] || cp "$stimulus" "$out/stream.txt"
+    random_from=$ENERGY_LEAD_RESULTS
+  else
+    "$vectors_tool" patent --count $((18 + random)) --seed 1 --out "$out/stream.txt" > "$out/stream.log" 2>&1 \
+      || { echo "energy.sh: writing the common stream failed; see $out/stream.log" >&2; exit 1; }
+  fi
   vec_opts=(--stimulus "$out/stream.txt" --tb-param RESET_EVERY=1000000)
   [[ -n "$cpr" ]] || cpr=2
 fi
@@ -183,7 +205,10 @@ for mode in "${modes[@]}"; do
   echo "vcd_bytes $(stat -c %s "$out/$mode/activity.vcd")" >> "$out/$mode/time.txt"
   [[ $keep_vcd -eq 1 ]] || rm -f "$out/$mode/activity.vcd"
 done
+per_opts=()
+[[ $per_result -eq 0 ]] || per_opts=(--per-result-out "$out/per_result.tsv")
 /usr/bin/python3 "$here/silicon/energy.py" report --top "$top" --dir "$out" --period "$period" \
   ${t_sim:+--t-sim "$t_sim"} --clocks-per-result "$cpr" --random-from "$random_from" \
+  --lead-results "$ENERGY_LEAD_RESULTS" "${per_opts[@]}" \
   || { echo "energy.sh: the report failed" >&2; exit 1; }
 echo "energy.sh: $out/energy.md, $out/energy.json"

@@ -270,6 +270,7 @@ compile_tb() {
   if [[ $# -ge 5 ]]; then tops+=(-s "$4"); files+=("$5"); fi
   if [[ ${#extra_tops[@]} -gt 0 ]]; then tops+=("${extra_tops[0]}" "${extra_tops[1]}"); files+=("${extra_tops[2]}"); fi
   iverilog -g2005 $specify -o "$vvp" "${tops[@]}" -DGATE_LEVEL ${TB_DEFINES[@]/#/-D} \
+    -I "$(dirname "$TB_FILE")" \
     "-DSDF_FILE=\"$out/icarus.sdf\"" \
     "-P$TB_TOP.T=$T" "-P$TB_TOP.VECTORS=\"$vectors\"" \
     "-P$TB_TOP.PINS_IMAGE=\"$rom_dir/pins.hex\"" \

@@ -13,7 +13,7 @@ ROM contents): proven equivalent, or a survivor to triage.
 The whole IP's targets (issue 46: specular_reg_block, specular_ip_axi) mutate their own
 module only, the other IP module and the device read as black boxes, and replay the AXI
 testbench's run (rtl/tb/run_ip_axi.cmake) in the cases of its ctest tests; they get no
-sat screen (docs/rtl_ip.md, "Mutants"): a survivor is killed or argued.
+sat screen (docs/rtl_ip/mutants_silicon.md, "Mutants"): a survivor is killed or argued.
 
   rtl_mutants.py run --target T [--count N] [--seed S] [--shard I/N] [--partial F] [--out DIR]
                                          (exit 1 on an unargued survivor, or 0 once --partial's

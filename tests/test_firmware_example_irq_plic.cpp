@@ -1,5 +1,5 @@
 // The bare-metal example (examples/firmware_rv32/main.c, issue 47) built for interrupts
-// through a PLIC (-DEXAMPLE_WAIT_IRQ: docs/integration.md section 10's wiring), run on the
+// through a PLIC (-DEXAMPLE_WAIT_IRQ: docs/integration/riscv_vp.md's wiring), run on the
 // host against each TLM target with a model of a SiFive-layout PLIC between done_irq and
 // the hart (tests/support/firmware_example_host.h). It must pass its own check, and the
 // PLIC must have been set up as section 10 says: priority above threshold, the source

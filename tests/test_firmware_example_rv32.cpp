@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <regex>
 #include <string>
 #include <tuple>
 
@@ -82,6 +83,37 @@ TEST(FirmwareExampleRv32Faults, APageFaultAsRiscvVpRaisesItIsSkippedToo) {
             std::string::npos)
       << hart->console;
   EXPECT_NE(hart->console.find("\nPASS: every result equal to Core\n"), std::string::npos);
+}
+
+// Issue 61: built with the platform's energy counter (EXAMPLE_ENERGY_COUNTER), the example
+// prints the row's energy: one operation per pixel, each near the gate-level mean of the
+// synchronous device (4 789 pJ, docs/design_space/energy_per_result.md) plus the bus and
+// the clocks the row took.
+TEST(FirmwareExampleRv32Energy, TheRowPrintsItsEnergyFromThePlatformsCounter) {
+  const std::filesystem::path elf = link_rv32_example("poll", " -DEXAMPLE_ENERGY_COUNTER=0x50010000u");
+  ASSERT_TRUE(std::filesystem::exists(elf));
+  static std::unique_ptr<firmware_targets::Rv32Hart> hart;  // alive until exit, as SystemC wants
+  hart = std::make_unique<firmware_targets::Rv32Hart>("hart", Kind::lt, firmware_targets::IrqWiring::hart, elf.string());
+  sc_core::sc_start();
+  std::cout << hart->console;
+  EXPECT_EQ(hart->exit_code, 0) << hart->console;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(hart->console, m,
+                                std::regex(R"(energy of the row \(the platform's counter at 0x50010000\): ([0-9]+) pJ per pixel, ([0-9]+) nJ for the row of ([0-9]+) pixels, ([0-9]+) operations)")))
+      << hart->console;
+  const double per_pixel = std::stod(m[1]), row_nj = std::stod(m[2]);
+  const long pixels = std::stol(m[3]), operations = std::stol(m[4]);
+  EXPECT_NE(hart->console.find("row of " + std::to_string(pixels) + " pixels (polled)"), std::string::npos);
+  EXPECT_EQ(operations, pixels);
+  EXPECT_NEAR(row_nj * 1000, per_pixel * static_cast<double>(pixels), 1000 + per_pixel);  // integer division
+  EXPECT_GT(per_pixel, 0.9 * 4789);
+  // At most what the whole run's work costs at the gate-level figures (docs/rtl_ip.md:
+  // 313 pJ a read, 493 a write, 147 an idle clock, here 10 ns): the IP's clock runs
+  // while the hart computes, and a slow hart makes a pixel cost mostly clocks.
+  const energy::EnergyTally whole = hart->target->energy();
+  const double bound = 2 * 4789.0 * static_cast<double>(whole.operations) + 313.0 * static_cast<double>(whole.reads) +
+                       493.0 * static_cast<double>(whole.writes) + 147.0 * sc_core::sc_time_stamp().to_seconds() / 10e-9;
+  EXPECT_LT(per_pixel * static_cast<double>(pixels), bound);
 }
 
 std::string rv32_test_name(const testing::TestParamInfo<std::tuple<Kind, std::string>>& info) {

@@ -1,5 +1,5 @@
 // The specialised verilations of the synchronous variant and of the drawn twin (issue 28;
-// docs/rtl.md, "Specialised verilation"): for every configuration this build verilated them for
+// docs/rtl/sync.md, "Specialised verilation"): for every configuration this build verilated them for
 // (rtl_sync_fixed_configs(): the default device, and those -DSPECULAR_RTL_SYNC_FIXED
 // adds), every cos code × every n in 1..1000 through RtlSyncCycleModel on that model
 // against the core — every field of every result, and 35 rising 2 periods after each

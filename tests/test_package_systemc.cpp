@@ -1,6 +1,6 @@
-// The installed package and the SystemC it was built with (issue 30, docs/integration.md
-// §9): a consumer gets that SystemC, or a configure that stops with one message naming
-// both SystemCs and the variable to set — never a link error.
+// The installed package and the SystemC it was built with (issue 30,
+// docs/integration/package.md): a consumer gets that SystemC, or a configure that stops
+// with one message naming both SystemCs and the variable to set — never a link error.
 //
 // Each test installs this build (cmake --install) into its own scratch folder. The second
 // SystemC is a fake made there: a CMake package SystemCLanguage whose library, compiled

@@ -1,4 +1,4 @@
-// The specialised verilations of the synchronous variant and the drawn twin (issue 28; docs/rtl.md,
+// The specialised verilations of the synchronous variant and the drawn twin (issue 28; docs/rtl/sync.md,
 // "Specialised verilation"), quickly: which runs use it (the plain C++ model, the TLM
 // rtl-sync target and specular_tb --model rtl-sync whenever the Config matches a
 // specialised build; the general model otherwise and for a VCD), and its results

@@ -290,7 +290,7 @@ TEST(TargetBusyGuard, AWriteWhileAnOperationRunsIsRefusedAsBusy) {
   }
   ASSERT_EQ(clears.size(), 7u);
   for (tlm::tlm_response_status clear : clears)
-    EXPECT_EQ(clear, tlm::TLM_OK_RESPONSE) << "writing STATUS (W1C) during the operation (docs/tlm.md cause 6)";
+    EXPECT_EQ(clear, tlm::TLM_OK_RESPONSE) << "writing STATUS (W1C) during the operation (docs/tlm/registers.md cause 6)";
   // Nothing the second master wrote reached the operand registers.
   const std::uint32_t written[5] = {cos, n, r, g, b};
   for (int k = 0; k < 5; ++k) EXPECT_EQ(after[k], written[k]) << "operand register " << k;

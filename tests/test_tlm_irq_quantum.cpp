@@ -1,4 +1,4 @@
-// The interrupt rule of docs/integration.md §10 with its quantum condition (issue 35).
+// The interrupt rule of docs/integration/riscv_vp.md with its quantum condition (issue 35).
 // An ISS as riscv-vp's runs ahead of simulated time under a quantum keeper and learns of
 // done_irq's edges only when it yields to the kernel (a sync). The IP lowers the level
 // at the acknowledging write's annotated time, i.e. the CPU's own time of that write;

@@ -341,8 +341,8 @@ std::string read_source(const std::string& relative) {
   return s.str();
 }
 
-// docs/tlm.md and docs/misuse.md carry the tables the register map prints, exactly,
-// between their markers (specular_register_docs --write rewrites them).
+// docs/tlm/registers.md and docs/misuse.md carry the tables the register map prints,
+// exactly, between their markers (specular_register_docs --write rewrites them).
 TEST(TlmRegisters, DocsCarryTheRegisterTablesExactly) {
   for (const register_docs::GeneratedTable& t : register_docs::generated_tables()) {
     const std::string doc = read_source(t.file);

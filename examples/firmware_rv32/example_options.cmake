@@ -54,9 +54,15 @@ if(NOT EXAMPLE_UART_BASE STREQUAL "")
   example_option(EXAMPLE_UART_BASE "" 0 0xFFFFFFFF 1 "a byte-wide UART transmit register; empty: the write system call")
 endif()
 
+set(EXAMPLE_ENERGY_COUNTER "" CACHE STRING "the platform's energy counter (docs/energy.md); empty: none read")
+if(NOT EXAMPLE_ENERGY_COUNTER STREQUAL "")
+  example_option(EXAMPLE_ENERGY_COUNTER "" 0 0xFFFFFFF0 4 "the platform's energy counter (docs/energy.md); empty: none read")
+endif()
+
 set(EXAMPLE_DEFINES "")
 foreach(name SPECULAR_BASE EXAMPLE_PLIC_BASE EXAMPLE_PLIC_SOURCE EXAMPLE_PLIC_CONTEXT EXAMPLE_PLIC_ENABLE_STRIDE
-             EXAMPLE_PLIC_CONTEXT_STRIDE EXAMPLE_CLINT_BASE EXAMPLE_WATCHDOG_TICKS EXAMPLE_UART_BASE)
+             EXAMPLE_PLIC_CONTEXT_STRIDE EXAMPLE_CLINT_BASE EXAMPLE_WATCHDOG_TICKS EXAMPLE_UART_BASE
+             EXAMPLE_ENERGY_COUNTER)
   if(NOT "${${name}}" STREQUAL "")
     list(APPEND EXAMPLE_DEFINES "${name}=${${name}}")
   endif()

@@ -1,7 +1,7 @@
 /* A bare-metal RV32 program that shades pixels with the specular IP through the C driver
  * (firmware/include/specular/specular_driver.h) and checks every result itself, for a
  * riscv-vp-like platform with the IP's 32 KiB window at SPECULAR_BASE (docs/firmware.md,
- * docs/integration.md section 10).
+ * docs/integration/riscv_vp.md).
  *
  * What it does, in order, reporting each step on the console (example_console_write):
  *   1. binds the driver (ID, VERSION, CONFIG);
@@ -42,6 +42,10 @@
  *   EXAMPLE_UART_BASE=addr   the console is a byte-wide transmit register at addr
  *                            (default: the write system call, which riscv-vp's
  *                            --intercept-syscalls takes)
+ *   EXAMPLE_ENERGY_COUNTER=addr  the platform's energy counter (SpecularEnergyCounter,
+ *                            specular/tlm/energy_counter.h; docs/energy.md): read before
+ *                            and after the row, whose energy per pixel and in all the
+ *                            program then prints (default: none, nothing read)
  *   EXAMPLE_BUS              the driver's accessors are the platform's, from
  *                            example_platform_bus() (default: none, volatile loads and
  *                            stores); the host test (tests/test_firmware_example_*.cpp)
@@ -116,6 +120,18 @@ volatile uint32_t example_last_fault_cause;            /* mcause of the last one
 volatile uint32_t example_last_fault_address;          /* mtval of the last one */
 
 static specular_dev dev;
+
+#ifdef EXAMPLE_ENERGY_COUNTER
+/* The platform's energy counter: 64-bit values read low word first (the read latches
+ * the high word). */
+static uint64_t energy_counter_read(uint32_t low_offset) {
+  volatile uint32_t* const counter = (volatile uint32_t*)(uintptr_t)(EXAMPLE_ENERGY_COUNTER + low_offset);
+  const uint32_t low = counter[0];
+  return ((uint64_t)counter[1] << 32) | low;
+}
+#define ENERGY_COUNTER_PJ 0x0u
+#define ENERGY_COUNTER_OPERATIONS 0x8u
+#endif
 
 #ifdef EXAMPLE_BUS
 const specular_bus* example_platform_bus(void);
@@ -363,7 +379,7 @@ static void sleep_until_interrupt(void* context) {
 /* A done interrupt counts only while STATUS.DONE is set. One with DONE clear is spurious:
  * an edge a decoupled platform delivers late (at the CPU's next sync), from an operation
  * already polled and acknowledged, or a line still high at mret under a long quantum
- * (docs/integration.md section 10). */
+ * (docs/integration/riscv_vp.md). */
 static void done_interrupt(void) {
   if ((specular_read(&dev, SPECULAR_STATUS_OFFSET) & SPECULAR_STATUS_DONE_MASK) == 0u) {
     ++example_spurious_interrupts;
@@ -524,8 +540,29 @@ static int run(void) {
 #else
   watchdog_arm("STATUS.DONE");
 #endif
+#ifdef EXAMPLE_ENERGY_COUNTER
+  const uint64_t energy_before = energy_counter_read(ENERGY_COUNTER_PJ);
+  const uint64_t operations_before = energy_counter_read(ENERGY_COUNTER_OPERATIONS);
+#endif
   status = specular_shade(&dev, EXAMPLE_ROW_N, row_rgb, row_cos, EXAMPLE_PIXELS, out);
   watchdog_disarm();
+#ifdef EXAMPLE_ENERGY_COUNTER
+  {
+    const uint64_t row_pj = energy_counter_read(ENERGY_COUNTER_PJ) - energy_before;
+    const uint64_t row_operations = energy_counter_read(ENERGY_COUNTER_OPERATIONS) - operations_before;
+    say("energy of the row (the platform's counter at ");
+    say_hex((uint32_t)EXAMPLE_ENERGY_COUNTER);
+    say("): ");
+    say_signed((int64_t)(row_pj / EXAMPLE_PIXELS));
+    say(" pJ per pixel, ");
+    say_signed((int64_t)(row_pj / 1000u));
+    say(" nJ for the row of ");
+    say_signed(EXAMPLE_PIXELS);
+    say(" pixels, ");
+    say_signed((int64_t)row_operations);
+    say(" operations\n");
+  }
+#endif
   if (status != SPECULAR_OK) return driver_failed("specular_shade", status);
   for (i = 0; i < 3u * EXAMPLE_PIXELS; ++i) {
     example_results[i] = out[i];

@@ -1,5 +1,5 @@
 // The synchronous control unit of specular_device_sync, replacing Fig. 2's flip-flops
-// 41-43 and gates 44-47 (docs/rtl.md, "The synchronous variant"): one clock (pin 28),
+// 41-43 and gates 44-47 (docs/rtl/sync.md, "The synchronous variant"): one clock (pin 28),
 // every flip-flop on its rising edge, reset (29) synchronous and active low, start (27)
 // a level sampled at the edge, no gated clock and no falling-edge state change.
 //   sequencer: idle -> pass 1 -> pass 2 -> idle, one-hot in pass1_q / pass2_q (idle:

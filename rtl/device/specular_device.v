@@ -13,7 +13,7 @@ module specular_device #(
   parameter NORM_INT = 10, NORM_FRAC = 20,
   parameter OUT_INT = 18, OUT_FRAC = 13,
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex",
-  // A configuration fixed when the device is built (docs/rtl.md, "Specialised
+  // A configuration fixed when the device is built (docs/rtl/sync.md, "Specialised
   // verilation"): FIXED_CONFIG = 1 ties pins 19, 20, 34 and the configuration inputs off
   // inside the device to these values, so a simulator folds them into the datapath (the
   // pins stay and are not read). FIXED_CONFIG = 0 (default): the pins and inputs are read.

@@ -1,4 +1,4 @@
-// The synchronous twin of the device (docs/rtl.md, "The synchronous variant"): Fig. 1's
+// The synchronous twin of the device (docs/rtl/sync.md, "The synchronous variant"): Fig. 1's
 // datapath unchanged (the same modules, instances and net names as specular_device.v),
 // with one clock. Every flip-flop runs on the rising edge of pin 28; start (27), the
 // loads 30-33 and register 9's write 37 are clock enables sampled at that edge;
@@ -15,7 +15,7 @@ module specular_device_sync #(
   parameter NORM_INT = 10, NORM_FRAC = 20,
   parameter OUT_INT = 18, OUT_FRAC = 13,
   parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex",
-  // A configuration fixed when the device is built (docs/rtl.md, "Specialised
+  // A configuration fixed when the device is built (docs/rtl/sync.md, "Specialised
   // verilation"): FIXED_CONFIG = 1 ties pins 19, 20, 34 and the configuration inputs off
   // inside the device to these values, so a simulator folds them into the datapath (the
   // pins stay and are not read). FIXED_CONFIG = 0 (default): the pins and inputs are read.

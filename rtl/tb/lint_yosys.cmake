@@ -1,6 +1,6 @@
 # rtl_lint_yosys: Yosys reads the device, checks the hierarchy and every net
 # (`check -assert` fails on undriven nets, multiple drivers and logic loops), and no
-# warning remains beyond the one docs/rtl.md explains: "Complex async reset" for
+# warning remains beyond the one docs/rtl/checks.md explains: "Complex async reset" for
 # d_flip_flop, a flip-flop with both asynchronous R and S, as Fig. 2 draws it.
 # Run from the ROM folder: rom5/rom38 read their images with $readmemh.
 # TOP (default specular_device) and EXPLAINED (how many of those warnings to expect,
@@ -36,9 +36,9 @@ foreach(warning IN LISTS warnings)
 endforeach()
 if(unexplained)
   string(REPLACE ";" "\n" unexplained "${unexplained}")
-  message(FATAL_ERROR "yosys warnings not explained in docs/rtl.md:\n${unexplained}")
+  message(FATAL_ERROR "yosys warnings not explained in docs/rtl/checks.md:\n${unexplained}")
 endif()
 if(NOT explained EQUAL EXPLAINED)
   message(FATAL_ERROR "expected ${EXPLAINED} 'Complex async reset' warning(s) of d_flip_flop, saw ${explained}")
 endif()
-message(STATUS "yosys (${TOP}): hierarchy, proc, check -assert pass; ${explained} warning(s), explained (docs/rtl.md)")
+message(STATUS "yosys (${TOP}): hierarchy, proc, check -assert pass; ${explained} warning(s), explained (docs/rtl/checks.md)")

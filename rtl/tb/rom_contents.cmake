@@ -3,17 +3,12 @@
 # failing when a word differs or was never read.
 file(REMOVE_RECURSE ${SCRATCH})
 file(MAKE_DIRECTORY ${SCRATCH})
-execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/rom_read.vvp -s rom_read_tb
-          "-Prom_read_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
-          "-Prom_read_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
-          "-Prom_read_tb.DUMP=\"${SCRATCH}/rom_dump.txt\"" ${PARAMS} ${SOURCES}
-  RESULT_VARIABLE status OUTPUT_VARIABLE compile_log ERROR_VARIABLE compile_log)
-# Any iverilog warning fails the test (the device's files carry no `timescale: the
-# one warning that would bring is switched off, docs/rtl.md).
-if(NOT status EQUAL 0 OR compile_log MATCHES "[Ww]arning")
-  message(FATAL_ERROR "iverilog failed or warned (status ${status}):\n${compile_log}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/icarus_bench.cmake)
+list(POP_BACK SOURCES testbench)  # rom_read_tb.v, last
+icarus_compile(rom_read_tb ${SCRATCH}/rom_read.vvp ${testbench}
+               "-Prom_read_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+               "-Prom_read_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+               "-Prom_read_tb.DUMP=\"${SCRATCH}/rom_dump.txt\"" ${PARAMS} ${SOURCES})
 execute_process(COMMAND ${VVP} -n ${SCRATCH}/rom_read.vvp RESULT_VARIABLE status
                 OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")

@@ -105,22 +105,16 @@ if(SATURATION STREQUAL "literal")
 else()
   set(literal 0)
 endif()
-execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/device_tb.vvp -s ${TB_TOP}
-          "-P${TB_TOP}.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
-          "-P${TB_TOP}.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
-          "-P${TB_TOP}.VECTORS=\"${SCRATCH}/vectors.csv\""
-          "-P${TB_TOP}.PINS_IMAGE=\"${ROM_DIR}/pins.hex\""
-          -P${TB_TOP}.LITERAL=${literal}
-          -P${TB_TOP}.CONSTANTS=${CONSTANTS_VALUE}
-          -P${TB_TOP}.NORMALISATION=${NORMALISATION_VALUE}
-          ${PARAMS} ${SOURCES} ${TESTBENCH}
-  RESULT_VARIABLE status OUTPUT_VARIABLE compile_log ERROR_VARIABLE compile_log)
-# Any iverilog warning fails the test (the device's files carry no `timescale: the
-# one warning that would bring is switched off, docs/rtl.md).
-if(NOT status EQUAL 0 OR compile_log MATCHES "[Ww]arning")
-  message(FATAL_ERROR "iverilog failed or warned (status ${status}):\n${compile_log}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/icarus_bench.cmake)
+icarus_compile(${TB_TOP} ${SCRATCH}/device_tb.vvp ${TESTBENCH}
+               "-P${TB_TOP}.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+               "-P${TB_TOP}.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+               "-P${TB_TOP}.VECTORS=\"${SCRATCH}/vectors.csv\""
+               "-P${TB_TOP}.PINS_IMAGE=\"${ROM_DIR}/pins.hex\""
+               -P${TB_TOP}.LITERAL=${literal}
+               -P${TB_TOP}.CONSTANTS=${CONSTANTS_VALUE}
+               -P${TB_TOP}.NORMALISATION=${NORMALISATION_VALUE}
+               ${PARAMS} ${SOURCES})
 execute_process(COMMAND ${VVP} -n ${SCRATCH}/device_tb.vvp RESULT_VARIABLE status
                 OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")

@@ -13,18 +13,13 @@ execute_process(COMMAND ${SPECULAR_TB} --random ${COUNT} --seed ${SEED} --format
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "specular_tb --random failed (status ${status}): ${summary}")
 endif()
-get_filename_component(tb_dir ${TESTBENCH} DIRECTORY)  # its includes: axi_lite_master.vh, ...
-execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/tb.vvp -s specular_ip_axi_tb -I${tb_dir}
-          "-Pspecular_ip_axi_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
-          "-Pspecular_ip_axi_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
-          "-Pspecular_ip_axi_tb.VECTORS=\"${SCRATCH}/vectors.csv\""
-          -Pspecular_ip_axi_tb.STALL=${STALL} -Pspecular_ip_axi_tb.SEED=${SEED}
-          ${SOURCES} ${TESTBENCH}
-  RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
-if(NOT status EQUAL 0 OR log MATCHES "[Ww]arning")
-  message(FATAL_ERROR "iverilog failed or warned (status ${status}):\n${log}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/icarus_bench.cmake)
+icarus_compile(specular_ip_axi_tb ${SCRATCH}/tb.vvp ${TESTBENCH}
+               "-Pspecular_ip_axi_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+               "-Pspecular_ip_axi_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+               "-Pspecular_ip_axi_tb.VECTORS=\"${SCRATCH}/vectors.csv\""
+               -Pspecular_ip_axi_tb.STALL=${STALL} -Pspecular_ip_axi_tb.SEED=${SEED}
+               ${SOURCES})
 execute_process(COMMAND ${VVP} -n ${SCRATCH}/tb.vvp RESULT_VARIABLE status
                 OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")

@@ -18,21 +18,17 @@ execute_process(COMMAND /usr/bin/python3 ${VECTORS_TOOL} ${SPECULAR_TB} ${SCRATC
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "gatesim_vectors.py failed (status ${status}): ${summary}")
 endif()
+include(${CMAKE_CURRENT_LIST_DIR}/icarus_bench.cmake)
 foreach(mode_clocks "3:operation 38" "0:operation 28" "1:read 2" "2:write 3" "4:idle 1")
   string(REPLACE ":" ";" mode_clocks "${mode_clocks}")
   list(GET mode_clocks 0 mode)
   list(GET mode_clocks 1 clocks)
-  execute_process(
-    COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/tb${mode}.vvp -s specular_ip_axi_gate_tb
-            "-Pspecular_ip_axi_gate_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
-            "-Pspecular_ip_axi_gate_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
-            "-Pspecular_ip_axi_gate_tb.VECTORS=\"${SCRATCH}/vectors_patent_patent_clamp.csv\""
-            -Pspecular_ip_axi_gate_tb.MODE=${mode} -Pspecular_ip_axi_gate_tb.ACCESSES=30
-            ${SOURCES} ${TESTBENCH}
-    RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
-  if(NOT status EQUAL 0 OR log MATCHES "[Ww]arning")
-    message(FATAL_ERROR "iverilog failed or warned (status ${status}):\n${log}")
-  endif()
+  icarus_compile(specular_ip_axi_gate_tb ${SCRATCH}/tb${mode}.vvp ${TESTBENCH}
+                 "-Pspecular_ip_axi_gate_tb.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+                 "-Pspecular_ip_axi_gate_tb.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+                 "-Pspecular_ip_axi_gate_tb.VECTORS=\"${SCRATCH}/vectors_patent_patent_clamp.csv\""
+                 -Pspecular_ip_axi_gate_tb.MODE=${mode} -Pspecular_ip_axi_gate_tb.ACCESSES=30
+                 ${SOURCES})
   execute_process(COMMAND ${VVP} -n ${SCRATCH}/tb${mode}.vvp RESULT_VARIABLE status
                   OUTPUT_VARIABLE out ERROR_VARIABLE out)
   message(STATUS "MODE ${mode}: ${out}")

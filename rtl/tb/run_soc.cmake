@@ -137,16 +137,11 @@ elseif(PLANT)
   message(FATAL_ERROR "run_soc: PLANT '${PLANT}' unknown (allowed: reorder)")
 endif()
 
-get_filename_component(tb_dir ${TESTBENCH} DIRECTORY)  # its includes: axi_lite_master.vh, ...
-execute_process(
-  COMMAND ${IVERILOG} -g2005 -Wall -Wno-timescale -o ${SCRATCH}/tb.vvp -s ${TB_TOP} -I${tb_dir}
-          "-P${TB_TOP}.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
-          "-P${TB_TOP}.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
-          ${tb_params} ${SOURCES} ${TESTBENCH}
-  RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
-if(NOT status EQUAL 0 OR log MATCHES "[Ww]arning")
-  message(FATAL_ERROR "iverilog failed or warned (status ${status}):\n${log}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/icarus_bench.cmake)
+icarus_compile(${TB_TOP} ${SCRATCH}/tb.vvp ${TESTBENCH}
+               "-P${TB_TOP}.ROM5_IMAGE=\"${ROM_DIR}/rom5.hex\""
+               "-P${TB_TOP}.ROM38_IMAGE=\"${ROM_DIR}/rom38.hex\""
+               ${tb_params} ${SOURCES})
 execute_process(COMMAND ${VVP} -n ${SCRATCH}/tb.vvp WORKING_DIRECTORY ${SCRATCH}
                 RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
 message(STATUS "${out}")

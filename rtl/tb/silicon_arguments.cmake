@@ -1,11 +1,6 @@
 # silicon_arguments: scripts/silicon.sh and gatesim.sh refuse bad arguments with exit 2
 # and a message naming the bad value; --help exits 0.
-function(expect_refusal want_pattern)
-  execute_process(COMMAND bash ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT status EQUAL 2 OR NOT out MATCHES "${want_pattern}")
-    message(FATAL_ERROR "'${ARGN}': status ${status}, output '${out}', want 2 and '${want_pattern}'")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/silicon_test_support.cmake)  # expect_refusal
 expect_refusal("usage" ${SILICON})
 expect_refusal("top 'nope'" ${SILICON} --top nope ${SCRATCH}/x)
 expect_refusal("unknown option '--frobnicate'" ${SILICON} --frobnicate ${SCRATCH}/x)

@@ -1,11 +1,6 @@
 # silicon_ip_energy_arguments: scripts/energy_ip.sh refuses bad arguments with exit 2 and
 # a message naming the bad value and the allowed range, before any replay; --help exits 0.
-function(expect_refusal want_pattern)
-  execute_process(COMMAND bash ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT status EQUAL 2 OR NOT out MATCHES "${want_pattern}")
-    message(FATAL_ERROR "'${ARGN}': status ${status}, output '${out}', want 2 and '${want_pattern}'")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/silicon_test_support.cmake)  # expect_refusal
 file(REMOVE_RECURSE ${SCRATCH})
 file(MAKE_DIRECTORY ${SCRATCH}/empty)
 expect_refusal("usage" ${ENERGY_IP})

@@ -4,18 +4,9 @@
 # passes at 1.1 T_sim (exit 0, PASS) and at T_sim / 2 one fails (exit 1, a MISMATCH
 # naming the access: a read with got and expected, a write's response, or done_irq).
 # T_SIM_CENTI is the figure the bisection measured (docs/rtl_ip.md), not read from this run.
+include(${CMAKE_CURRENT_LIST_DIR}/silicon_test_support.cmake)
 foreach(case pass fail)
-  if(case STREQUAL "pass")
-    math(EXPR period_centi "${T_SIM_CENTI} * 11 / 10")
-  else()
-    math(EXPR period_centi "${T_SIM_CENTI} / 2")
-  endif()
-  math(EXPR whole "${period_centi} / 100")
-  math(EXPR frac "${period_centi} % 100")
-  if(frac LESS 10)
-    set(frac "0${frac}")
-  endif()
-  set(period "${whole}.${frac}")
+  gatesim_period(${case} ${T_SIM_CENTI} period)
   file(REMOVE_RECURSE ${SCRATCH}/${case})
   execute_process(COMMAND bash ${GATESIM} --top specular_ip_axi --netlist-dir ${NETLIST_DIR}
                           --specular-tb ${SPECULAR_TB} --quiet ${period} ${SCRATCH}/${case} ${ROM_DIR}

@@ -1,7 +1,7 @@
 // Self-checking Icarus testbench of the synchronous variant (specular_device_sync):
 // replays the vectors that `specular_tb --format csv` wrote (the hex columns: register
 // 1, register 9 after each pass, pins 24-26) through pins 17-35 with the variant's
-// protocol (docs/rtl.md, "The synchronous variant"), as specular_device_tb.v does for
+// protocol (docs/rtl/sync.md, "The synchronous variant"), as specular_device_tb.v does for
 // the drawn device:
 //   - start (27), pin 17, and (when n, R, G, B change) pins 18, 21-23 with their loads
 //     30-33 are set a quarter period before the start edge (a rising clock edge) and
@@ -24,167 +24,36 @@
 `timescale 1ns / 1ps
 
 module specular_device_sync_tb;
-  parameter VECTORS = "vectors.csv";
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter PINS_IMAGE = "pins.hex";  // pins 19, 20 per constants policy (specular_romgen)
-  parameter LITERAL = 0;        // 1: Saturation::literal
-  parameter CONSTANTS = 0;      // Constants enum value: pins 19, 20 and ROM 38's bank
-  parameter NORMALISATION = 0;  // Normalisation enum value: ROM 38's bank
-  parameter real T = 10.0;      // clock period (ns)
-  parameter RESET_EVERY = 17;
-  parameter MAX_VECTORS = 8192;
-  // Gate level (scripts/gatesim.sh, `define GATE_LEVEL): select 36 and 35 change a
-  // clock-to-Q delay after the clock edge, so their time is checked to EDGE_TOLERANCE
-  // periods (0: exactly).
-  parameter real EDGE_TOLERANCE = 0.0;
+  `include "specular_device_parameters.vh"  // VECTORS, ROM images, the policy, T, ...
+  // (Gate level: select 36 and 35 change a clock-to-Q delay after the clock edge,
+  // within EDGE_TOLERANCE.)
 
   // Default widths (docs/design.md), as specular_tb uses them.
   localparam COS_FRAC = 16, N_BITS = 10, RGB_BITS = 8, MUX4_FRAC = 8;
+  localparam COS_W = 1 + COS_FRAC, MUX4_W = N_BITS + MUX4_FRAC;
   localparam REG9_W = 37, REG9_FRAC = 22, OUT_W = 32, ROM38_W = 25, NORM_W = 31;
-  localparam BANK_BITS = 4;     // bank = 4 * constants + normalisation (twin/rom38_banks.h)
+  localparam ROM38_BANK_BITS = 4;  // bank = 4 * constants + normalisation (twin/rom38_banks.h)
+  // The protocol's timing (specular_device_bench.vh): select 36 rises at 1 T, 35 falls at
+  // 1 T and rises at 2 T, each read at the next rising clock edge; the sequencer checked
+  // idle after the clock edge inside the reset (held low one period) and T/100 after it.
+  localparam TB_NAME = "specular_device_sync_tb";
+  localparam real SELECT36_AT = 1.0, FALL35_AT = 1.0, RISE35_AT = 2.0;
+  localparam SAMPLE_AT_NEXT_EDGE = 1;
+  localparam real RESET_CHECK_DURING = T - T / 100, RESET_REST = T / 100, RESET_CHECK_AFTER = T / 100;
 
-  // ---- device ----
-  reg  [COS_FRAC:0]           pin17_cos = 0;
-  reg  [N_BITS-1:0]           pin18_n = 0;
-  // Pins 19 (h) and 20 (a): wired constants of the constants policy, as the harness
-  // ties them (codes written by specular_romgen from constants.cpp).
-  reg  [63:0]                 pin_codes [0:5];
-  initial $readmemh(PINS_IMAGE, pin_codes);
-  wire [N_BITS+MUX4_FRAC-1:0] pin19_h = pin_codes[2 * CONSTANTS][N_BITS+MUX4_FRAC-1:0];
-  wire [REG9_W-1:0]           pin20_a = pin_codes[2 * CONSTANTS + 1][REG9_W-1:0];
-  reg  [RGB_BITS-1:0]         pin21_r = 0, pin22_g = 0, pin23_b = 0;
-  wire [OUT_W-1:0]            pin24_r, pin25_g, pin26_b;
-  reg  pin27_start = 0, pin28_clk = 0, pin29_reset_n = 0;
-  reg  pin30_load_n = 0, pin31_load_r = 0, pin32_load_g = 0, pin33_load_b = 0;
-  wire pin34_carry = 1'b1;
-  wire pin35_done;
-  wire obs_select36, obs_write37, obs_pass1;
-  wire [COS_FRAC:0]  obs_reg1_q;
-  wire [REG9_W-1:0]  obs_reg9_q;
-  wire [ROM38_W-1:0] obs_rom38_k;
-  wire [NORM_W-1:0]  obs_mul39_norm;
-  wire               cfg_literal = LITERAL;
-  wire [BANK_BITS-1:0] cfg_rom38_bank = 4 * CONSTANTS + NORMALISATION;
+  `include "specular_device_bench.vh"  // pins, clock, vectors, monitors, schedule
+  wire obs_pass1;
 
 `ifdef GATE_LEVEL
   // The mapped netlist (scripts/silicon.sh --top specular_device_sync) with the SDF
   // delays; its ROM macros read their images themselves.
-  initial $sdf_annotate(`SDF_FILE, dut);
   specular_device_sync dut (
 `else
   specular_device_sync #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
 `endif
-    .pin17_cos(pin17_cos), .pin18_n(pin18_n), .pin19_h(pin19_h), .pin20_a(pin20_a),
-    .pin21_r(pin21_r), .pin22_g(pin22_g), .pin23_b(pin23_b),
-    .pin24_r(pin24_r), .pin25_g(pin25_g), .pin26_b(pin26_b),
-    .pin27_start(pin27_start), .pin28_clk(pin28_clk), .pin29_reset_n(pin29_reset_n),
-    .pin30_load_n(pin30_load_n), .pin31_load_r(pin31_load_r), .pin32_load_g(pin32_load_g),
-    .pin33_load_b(pin33_load_b), .pin34_carry(pin34_carry), .pin35_done(pin35_done),
-    .cfg_literal(cfg_literal), .cfg_rom38_bank(cfg_rom38_bank),
-    .obs_select36(obs_select36), .obs_write37(obs_write37), .obs_pass1(obs_pass1),
-    .obs_reg1_q(obs_reg1_q),
-    .obs_reg9_q(obs_reg9_q), .obs_rom38_k(obs_rom38_k), .obs_mul39_norm(obs_mul39_norm));
-
-  // Pin 28: rising edges at T/2 + k T.
-  always #(T / 2) pin28_clk = ~pin28_clk;
-
-  // ---- vectors ----
-  real              v_cos [0:MAX_VECTORS-1];
-  integer           v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1],
-                    v_b [0:MAX_VECTORS-1];
-  reg [COS_FRAC:0]  v_reg1 [0:MAX_VECTORS-1];
-  reg [REG9_W-1:0]  v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
-  reg [OUT_W-1:0]   v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
-                    v_out26 [0:MAX_VECTORS-1];
-  integer count;
-
-  task read_vectors;
-    integer fd, fields, n, r, g, b, pass;
-    real cos, skip;
-    reg [63:0] h1, h2, h3, h4, h5, h6;
-    reg [8*2048-1:0] header;
-    begin
-      fd = $fopen(VECTORS, "r");
-      if (fd == 0) $fatal(1, "specular_device_sync_tb: cannot read %0s", VECTORS);
-      fields = $fgets(header, fd);
-      count = 0;
-      fields = 25;
-      while (!$feof(fd) && fields == 25) begin
-        fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
-                              "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
-                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
-                         skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
-        if (fields == 25) begin
-          if (count == MAX_VECTORS) $fatal(1, "specular_device_sync_tb: more than %0d vectors", MAX_VECTORS);
-          v_cos[count] = cos;
-          v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
-          v_reg1[count] = h1[COS_FRAC:0];
-          v_pass1[count] = h2[REG9_W-1:0];
-          v_pass2[count] = h3[REG9_W-1:0];
-          v_out24[count] = h4[OUT_W-1:0];
-          v_out25[count] = h5[OUT_W-1:0];
-          v_out26[count] = h6[OUT_W-1:0];
-          count = count + 1;
-        end else if (fields > 0) begin
-          $fatal(1, "specular_device_sync_tb: %0s line %0d: %0d of 25 fields", VECTORS, count + 2, fields);
-        end
-      end
-      $fclose(fd);
-      if (count == 0) $fatal(1, "specular_device_sync_tb: no vectors in %0s", VECTORS);
-    end
-  endtask
-
-  // ---- monitors: results as the harness samples them ----
-  reg     monitoring = 0;   // off during an aborted operation
-  integer started = 0, pass1_seen = 0, done_seen = 0, fall_seen = 0, checks = 0;
-  real     start_time [0:MAX_VECTORS-1];
-
-  task mismatch(input integer index, input [8*24-1:0] what, input [63:0] got, input [63:0] want);
-    $fatal(1, "specular_device_sync_tb: MISMATCH vector %0d (cos %f n %0d RGB %0d,%0d,%0d) %0s: got %h, want %h at %0t",
-           index, v_cos[index], v_n[index], v_r[index], v_g[index], v_b[index], what, got,
-           want, $realtime);
-  endtask
-
-  // An edge `elapsed` after start is not `periods` periods after it (to EDGE_TOLERANCE).
-  function off_time(input real elapsed, input real periods);
-    off_time = elapsed < periods * T || elapsed > (periods + EDGE_TOLERANCE) * T;
-  endfunction
-
-  // Register 1, register 9 and pins 24-26 change at the clock edge that raises select
-  // 36 or 35 (all registered) and settle within the period: they are read as a
-  // synchronous consumer reads them, at the next rising clock edge (before it acts).
-  always @(posedge obs_select36) if (monitoring) begin
-    if (pass1_seen >= started) $fatal(1, "specular_device_sync_tb: select 36 rose with no operation at %0t", $realtime);
-    if (off_time($realtime - start_time[pass1_seen], 1.0))
-      $fatal(1, "specular_device_sync_tb: select 36 rose %f periods after start %0d (want 1)",
-             ($realtime - start_time[pass1_seen]) / T, pass1_seen);
-    @(posedge pin28_clk);
-    if (obs_reg1_q !== v_reg1[pass1_seen]) mismatch(pass1_seen, "register 1", obs_reg1_q, v_reg1[pass1_seen]);
-    if (obs_reg9_q !== v_pass1[pass1_seen]) mismatch(pass1_seen, "register 9 pass 1", obs_reg9_q, v_pass1[pass1_seen]);
-    checks = checks + 2;
-    pass1_seen = pass1_seen + 1;
-  end
-
-  always @(negedge pin35_done) if (monitoring) begin
-    if (off_time($realtime - start_time[fall_seen], 1.0))
-      $fatal(1, "specular_device_sync_tb: 35 fell %f periods after start %0d (want 1)",
-             ($realtime - start_time[fall_seen]) / T, fall_seen);
-    fall_seen = fall_seen + 1;
-  end
-
-  always @(posedge pin35_done) if (monitoring) begin
-    if (done_seen >= started) $fatal(1, "specular_device_sync_tb: 35 rose with no operation at %0t", $realtime);
-    if (off_time($realtime - start_time[done_seen], 2.0))
-      $fatal(1, "specular_device_sync_tb: 35 rose %f periods after start %0d (want 2)",
-             ($realtime - start_time[done_seen]) / T, done_seen);
-    @(posedge pin28_clk);
-    if (obs_reg9_q !== v_pass2[done_seen]) mismatch(done_seen, "register 9 pass 2", obs_reg9_q, v_pass2[done_seen]);
-    if (pin24_r !== v_out24[done_seen]) mismatch(done_seen, "pin 24", pin24_r, v_out24[done_seen]);
-    if (pin25_g !== v_out25[done_seen]) mismatch(done_seen, "pin 25", pin25_g, v_out25[done_seen]);
-    if (pin26_b !== v_out26[done_seen]) mismatch(done_seen, "pin 26", pin26_b, v_out26[done_seen]);
-    checks = checks + 5;
-    done_seen = done_seen + 1;
-  end
+    .obs_pass1(obs_pass1),
+    `include "specular_device_ports.vh"
+  );
 
 `ifdef GATE_LEVEL
   // Hazard watch at gate level: every transition of pin 35, select 36 and write 37 and
@@ -220,19 +89,9 @@ module specular_device_sync_tb;
 `endif
 
   // ---- driver ----
-  real     next_start, prev_start;
-  integer  i, resets = 0, back_to_back = 0;
-  reg      loaded;
-  integer  loaded_n, loaded_r, loaded_g, loaded_b;
-
-  // The first rising clock edge at least a quarter period from now.
-  function real first_edge_after_quarter(input real now);
-    real rising;
-    begin
-      rising = T / 2;
-      while (rising < now + T / 4) rising = rising + T;
-      first_edge_after_quarter = rising;
-    end
+  // A start's data, start and loads come a quarter period before its edge.
+  function real earliest_start(input real now);
+    earliest_start = now + T / 4;
   endfunction
 
   task expect_idle(input [8*16-1:0] when);
@@ -244,19 +103,17 @@ module specular_device_sync_tb;
   // Start an operation at `at` (a rising clock edge): start, data and loads a quarter
   // period before; returns at the start edge (the caller lowers start and the loads
   // a quarter period later).
-  task raise_start(input real at, input [COS_FRAC:0] cos_code, input integer index);
+  task raise_start(input real at, input [COS_W-1:0] cos_code, input integer index);
     reg reload;
     begin
-      reload = !loaded || v_n[index] != loaded_n || v_r[index] != loaded_r ||
-               v_g[index] != loaded_g || v_b[index] != loaded_b;
+      reload = !same_operands(index);
       #(at - T / 4 - $realtime);
       pin17_cos = cos_code;
       if (reload) begin
         pin18_n = v_n[index];
         pin21_r = v_r[index]; pin22_g = v_g[index]; pin23_b = v_b[index];
         {pin30_load_n, pin31_load_r, pin32_load_g, pin33_load_b} = 4'b1111;
-        loaded = 1;
-        loaded_n = v_n[index]; loaded_r = v_r[index]; loaded_g = v_g[index]; loaded_b = v_b[index];
+        note_loaded(index);
       end
       pin27_start = 1;
       #(T / 4);
@@ -269,34 +126,6 @@ module specular_device_sync_tb;
       #(T / 4);
       pin27_start = 0;
       {pin30_load_n, pin31_load_r, pin32_load_g, pin33_load_b} = 4'b0000;
-    end
-  endtask
-
-  // An operation aborted by reset `phase` quarter periods after its start edge.
-  task aborted_operation(input integer index, input integer phase);
-    real at;
-    begin
-      wait (done_seen == started);  // the operations before it are complete
-      monitoring = 0;
-      at = first_edge_after_quarter($realtime);
-      if (at < prev_start + 3 * T) at = prev_start + 3 * T;
-      raise_start(at, ~v_reg1[index] & {1'b0, {COS_FRAC{1'b1}}}, index);
-      fork
-        lower_start;
-        begin
-          #(phase * T / 4);
-          pin29_reset_n = 0;
-          #(T - T / 100);  // past the one clock edge inside the reset
-          expect_idle("during");
-          #(T / 100);
-          pin29_reset_n = 1;
-          #(T / 100);
-          expect_idle("after");
-        end
-      join
-      resets = resets + 1;
-      prev_start = -10 * T;
-      monitoring = 1;
     end
   endtask
 
@@ -327,47 +156,13 @@ module specular_device_sync_tb;
 
   initial begin
     read_vectors;
-    loaded = 0;
-    // Reset first: the device is defined from reset on (no initial values).
-    #(T / 4);
-    pin29_reset_n = 0;
-    #(T);
-    pin29_reset_n = 1;
-    #(T / 100);
-    expect_idle("after");
+    first_reset;
     start_in_pass1_ignored;
-    monitoring = 1;
-    prev_start = -10 * T;
-    for (i = 0; i < count; i = i + 1) begin
-      if (i % RESET_EVERY == RESET_EVERY - 1)
-        aborted_operation(i, 1 + 2 * ((i / RESET_EVERY) % 5));  // 0.25, 0.75 ... 2.25 T
-      next_start = first_edge_after_quarter($realtime);
-      if (loaded && v_n[i] == loaded_n && v_r[i] == loaded_r && v_g[i] == loaded_g &&
-          v_b[i] == loaded_b) begin
-        if (next_start < prev_start + 2 * T) next_start = prev_start + 2 * T;
-        if (next_start == prev_start + 2 * T) back_to_back = back_to_back + 1;
-      end else if (next_start < prev_start + 3 * T) begin
-        next_start = prev_start + 3 * T;
-      end
-      start_time[i] = next_start;
-      started = started + 1;
-      prev_start = next_start;
-      raise_start(next_start, $rtoi(v_cos[i] * (1 << COS_FRAC) + 0.5), i);
-      lower_start;
-    end
-    #(3 * T);
-    if (done_seen != count || pass1_seen != count || fall_seen != count)
-      $fatal(1, "specular_device_sync_tb: %0d operations, %0d pass-1 writes, %0d results",
-             count, pass1_seen, done_seen);
+    run_operations;
     report_pulses;
     $display("specular_device_sync_tb: PASS %0d operations (%0d back to back at 2 T), %0d resets mid-operation, %0d values checked, %0s",
              count, back_to_back, resets, checks, VECTORS);
     $finish;
-  end
-
-  initial begin : watchdog
-    #(T * (4 * MAX_VECTORS + 100));
-    $fatal(1, "specular_device_sync_tb: watchdog: no end after %0d periods", 4 * MAX_VECTORS + 100);
   end
 endmodule
 

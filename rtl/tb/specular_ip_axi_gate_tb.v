@@ -32,12 +32,7 @@
 `timescale 1ns / 1ps
 
 module specular_ip_axi_gate_tb;
-  parameter VECTORS = "vectors.csv";
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter PINS_IMAGE = "pins.hex";  // gatesim.sh passes it to every device top: unused
-  parameter LITERAL = 0;
-  parameter CONSTANTS = 0;
-  parameter NORMALISATION = 0;
+  `include "specular_policy_parameters.vh"  // PINS_IMAGE unused; the policy 0/0/0 only
   parameter real T = 20.0;            // clock period (ns)
   parameter MODE = 3;
   parameter ACCESSES = 60;
@@ -68,13 +63,8 @@ module specular_ip_axi_gate_tb;
 `else
   specular_ip_axi #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE)) dut (
 `endif
-    .aclk(aclk), .aresetn(aresetn),
-    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
-    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
-    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
-    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
-    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
-    .done_irq(done_irq));
+    `include "axi_lite_slave_ports.vh"
+  );
 
   // ---- the master: one access at a time, on the SDC's timing ----
   // sample: the outputs just before the rising edge (the caller is at a falling edge)
@@ -82,17 +72,31 @@ module specular_ip_axi_gate_tb;
     #(T / 2 - T / 64);
   endtask
 
+  // end_period: to the falling edge that ends the access's period (the caller then
+  // lowers what was taken); an access not done in 50 periods is a failure, not a hang
+  integer periods;
+  task end_period;
+    input [8*5-1:0] kind;
+    input [31:0] address;
+    input [8*8-1:0] awaited;
+    begin
+      @(negedge aclk);
+      periods = periods + 1;
+      if (periods > 50)
+        $fatal(1, "specular_ip_axi_gate_tb: MISMATCH %0s 0x%08h: no %0s in 50 periods", kind, address, awaited);
+    end
+  endtask
+
   task write;
     input [31:0] address;
     input [31:0] data;
     reg aw_done, w_done, b_done;
-    integer k;
     begin
       awaddr = address; awvalid = 1'b1;
       wdata = data; wstrb = 4'b1111; wvalid = 1'b1;
       bready = 1'b1;
       aw_done = 1'b0; w_done = 1'b0; b_done = 1'b0;
-      k = 0;
+      periods = 0;
       while (!b_done) begin
         sample;
         if (awvalid && awready === 1'b1) aw_done = 1'b1;
@@ -106,11 +110,9 @@ module specular_ip_axi_gate_tb;
             $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h of 0x%08h: response %b, expected OKAY at %0t",
                    address, data, bresp, $realtime);
         end
-        @(negedge aclk);
+        end_period("write", address, "response");
         if (aw_done) awvalid = 1'b0;
         if (w_done) wvalid = 1'b0;
-        k = k + 1;
-        if (k > 50) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH write 0x%08h: no response in 50 periods", address);
       end
       bready = 1'b0;
     end
@@ -121,12 +123,11 @@ module specular_ip_axi_gate_tb;
     input [31:0] expected;
     input [8*16-1:0] what;
     reg ar_done, r_done;
-    integer k;
     begin
       araddr = address; arvalid = 1'b1;
       rready = 1'b1;
       ar_done = 1'b0; r_done = 1'b0;
-      k = 0;
+      periods = 0;
       while (!r_done) begin
         sample;
         if (arvalid && arready === 1'b1) ar_done = 1'b1;
@@ -136,64 +137,34 @@ module specular_ip_axi_gate_tb;
             $fatal(1, "specular_ip_axi_gate_tb: MISMATCH read 0x%08h (%0s): 0x%08h response %b, expected 0x%08h OKAY at %0t",
                    address, what, rdata, rresp, expected, $realtime);
         end
-        @(negedge aclk);
+        end_period("read", address, "data");
         if (ar_done) arvalid = 1'b0;
-        k = k + 1;
-        if (k > 50) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH read 0x%08h: no data in 50 periods", address);
       end
       rready = 1'b0;
     end
   endtask
 
   // ---- vectors (specular_tb --format csv: Core's bits, as specular_ip_axi_tb.v reads them) ----
-  integer v_n [0:MAX_VECTORS-1], v_r [0:MAX_VECTORS-1], v_g [0:MAX_VECTORS-1], v_b [0:MAX_VECTORS-1];
-  reg [31:0] v_reg1 [0:MAX_VECTORS-1], v_out24 [0:MAX_VECTORS-1], v_out25 [0:MAX_VECTORS-1],
-             v_out26 [0:MAX_VECTORS-1];
-  reg [63:0] v_pass1 [0:MAX_VECTORS-1], v_pass2 [0:MAX_VECTORS-1];
-  integer count;
-  task read_vectors;
-    integer fd, fields, n, r, g, b, pass;
-    real cos, skip;
-    reg [63:0] h1, h2, h3, h4, h5, h6;
-    reg [8*2048-1:0] header;
-    begin
-      fd = $fopen(VECTORS, "r");
-      if (fd == 0) $fatal(1, "specular_ip_axi_gate_tb: cannot read %0s", VECTORS);
-      fields = $fgets(header, fd);
-      count = 0;
-      fields = 25;
-      while (!$feof(fd) && fields == 25) begin
-        fields = $fscanf(fd, {"%f,%d,%d,%d,%d,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,%f,",
-                              "0x%h,0x%h,0x%h,0x%h,0x%h,0x%h,%d\n"},
-                         cos, n, r, g, b, skip, skip, skip, skip, skip, skip, skip, skip, skip,
-                         skip, skip, skip, skip, h1, h2, h3, h4, h5, h6, pass);
-        if (fields == 25) begin
-          if (count == MAX_VECTORS) $fatal(1, "specular_ip_axi_gate_tb: more than %0d vectors", MAX_VECTORS);
-          v_n[count] = n; v_r[count] = r; v_g[count] = g; v_b[count] = b;
-          v_reg1[count] = h1[31:0];
-          // register 9 is S14.22, 37 bits: the HI word reads it sign-extended
-          v_pass1[count] = {{27{h2[36]}}, h2[36:0]};
-          v_pass2[count] = {{27{h3[36]}}, h3[36:0]};
-          v_out24[count] = h4[31:0]; v_out25[count] = h5[31:0]; v_out26[count] = h6[31:0];
-          count = count + 1;
-        end else if (fields > 0) begin
-          $fatal(1, "specular_ip_axi_gate_tb: %0s line %0d: %0d of 25 fields", VECTORS, count + 2, fields);
-        end
-      end
-      $fclose(fd);
-      if (count == 0) $fatal(1, "specular_ip_axi_gate_tb: no vectors in %0s", VECTORS);
-    end
-  endtask
+  localparam TB_NAME = "specular_ip_axi_gate_tb";
+  localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
+  `include "specular_vectors.vh"  // read_vectors: VECTORS into v_*[0:count-1]
 
   // ---- the three kinds of access ----
-  task operation;
+  // N, R, G, B of vector i, in that order (an operation writes COS after them)
+  task write_nrgb;
     input integer i;
-    input integer all_reads;
     begin
       write(N, v_n[i]);
       write(R, v_r[i]);
       write(G, v_g[i]);
       write(B, v_b[i]);
+    end
+  endtask
+  task operation;
+    input integer i;
+    input integer all_reads;
+    begin
+      write_nrgb(i);
       write(COS, v_reg1[i]);
       write(CONTROL, 32'h1);   // START: its response comes with the results
       if (done_irq !== 1'b1) $fatal(1, "specular_ip_axi_gate_tb: MISMATCH vector %0d: done_irq low after START's response", i);
@@ -229,10 +200,7 @@ module specular_ip_axi_gate_tb;
     input integer i;
     begin
       write(COS, v_reg1[i]);
-      write(N, v_n[i]);
-      write(R, v_r[i]);
-      write(G, v_g[i]);
-      write(B, v_b[i]);
+      write_nrgb(i);
     end
   endtask
 

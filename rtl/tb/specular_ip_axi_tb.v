@@ -30,21 +30,12 @@ module specular_ip_axi_tb;
   // ADDR_WIDTH 32, as the TLM `axi` target verilates it: the refusals above the map
   // (0x8000 and up, 0xDEADBEEF) reach the IP and are its to answer.
   specular_ip_axi #(.ROM5_IMAGE(ROM5_IMAGE), .ROM38_IMAGE(ROM38_IMAGE), .ADDR_WIDTH(32)) dut (
-    .aclk(aclk), .aresetn(aresetn),
-    .s_axi_awvalid(awvalid), .s_axi_awready(awready), .s_axi_awaddr(awaddr), .s_axi_awprot(3'd0),
-    .s_axi_wvalid(wvalid), .s_axi_wready(wready), .s_axi_wdata(wdata), .s_axi_wstrb(wstrb),
-    .s_axi_bvalid(bvalid), .s_axi_bready(bready), .s_axi_bresp(bresp),
-    .s_axi_arvalid(arvalid), .s_axi_arready(arready), .s_axi_araddr(araddr), .s_axi_arprot(3'd0),
-    .s_axi_rvalid(rvalid), .s_axi_rready(rready), .s_axi_rdata(rdata), .s_axi_rresp(rresp),
-    .done_irq(done_irq));
+    `include "axi_lite_slave_ports.vh"
+  );
 
   specular_ip_axi_props props (
-    .aclk(aclk), .aresetn(aresetn),
-    .awvalid(awvalid), .awready(awready), .awaddr(awaddr),
-    .wvalid(wvalid), .wready(wready), .wdata(wdata), .wstrb(wstrb),
-    .bvalid(bvalid), .bready(bready), .bresp(bresp),
-    .arvalid(arvalid), .arready(arready), .araddr(araddr),
-    .rvalid(rvalid), .rready(rready), .rdata(rdata), .rresp(rresp));
+    `include "axi_lite_check_ports.vh"
+  );
 
   localparam [31:0] STATUS = 32'h00C, CONTROL = 32'h010, ERROR_ADDRESS = 32'h018;
   localparam [31:0] COS = 32'h020, N = 32'h024, R = 32'h028, G = 32'h02C, B = 32'h030;
@@ -67,6 +58,8 @@ module specular_ip_axi_tb;
     end
   endtask
 
+  localparam TB_NAME = "specular_ip_axi_tb";
+  localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
   `include "specular_vectors.vh"  // read_vectors: VECTORS into v_*[0:count-1]
   // ROM 38's table as specular_romgen writes it from the C++ tables (rtl_rom_contents
   // checks the image against them): ROM38_K after an operation is word n of bank 0
@@ -320,6 +313,22 @@ module specular_ip_axi_tb;
     end
   endtask
 
+  // A read with RREADY raised with ARVALID and no stall: returns at the edge that takes
+  // R (RDATA and RRESP there), RREADY still high (the caller lowers it).
+  task read_unstalled;
+    input [31:0] address;
+    begin
+      araddr = address;
+      arvalid = 1'b1;
+      rready = 1'b1;
+      @(posedge aclk);
+      while (!arready) @(posedge aclk);
+      #1 arvalid = 1'b0;
+      @(posedge aclk);
+      while (!rvalid) @(posedge aclk);
+    end
+  endtask
+
   // A write and a read issued in the same cycle; STATUS.BUSY seen during an operation.
   task check_concurrency;
     reg [31:0] data;
@@ -337,27 +346,13 @@ module specular_ip_axi_tb;
           busy_seen = 0;
           data = 32'd0;
           while (data[1] !== 1'b1) begin
-            araddr = STATUS;
-            arvalid = 1'b1;
-            rready = 1'b1;
-            @(posedge aclk);
-            while (!arready) @(posedge aclk);
-            #1 arvalid = 1'b0;
-            @(posedge aclk);
-            while (!rvalid) @(posedge aclk);
+            read_unstalled(STATUS);
             data = rdata;
             if (rresp !== OKAY) $fatal(1, "MISMATCH STATUS read refused during an operation");
             if (data[0] === 1'b1) busy_seen = busy_seen + 1;
             if (data[0] === 1'b1 && busy_seen == 1) begin  // OUT_* hold the last results meanwhile
               #1 rready = 1'b0;
-              araddr = OUT_R + 4 * (busy_seen % 3);
-              arvalid = 1'b1;
-              rready = 1'b1;
-              @(posedge aclk);
-              while (!arready) @(posedge aclk);
-              #1 arvalid = 1'b0;
-              @(posedge aclk);
-              while (!rvalid) @(posedge aclk);
+              read_unstalled(OUT_R + 4 * (busy_seen % 3));
               if (rdata !== out_before[busy_seen % 3])
                 $fatal(1, "MISMATCH OUT word %0d changed during an operation", busy_seen % 3);
             end

@@ -19,11 +19,6 @@
 `timescale 1ns / 1ps
 
 module specular_soc_outstanding_tb;
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter [31:0] IP_BASE = 32'h4000_0000;
-  parameter [31:0] RAM_BASE = 32'h0000_0000;
-  parameter RAM_BYTES = 65536;
-  parameter SEED = 1;
   parameter PHASES = 120;
   parameter MAX_IN_FLIGHT = 6;     // the interconnect takes 4 per direction: more wait
   parameter STALL_PERCENT = 15;
@@ -32,9 +27,8 @@ module specular_soc_outstanding_tb;
   localparam RAM_LOCS = 24;        // 16 words at the RAM's start, 8 at its end
   localparam MAX_OPS = PHASES * MAX_PER_PHASE + RAM_LOCS;  // phase 0 writes every RAM word
 
-  `include "axi_lite_master.vh"
   localparam SOC_OPEN_WRITES = 4, SOC_OPEN_READS = 4;  // specular_soc_dut.vh's soc_port
-  `include "specular_soc_dut.vh"
+  `include "specular_soc_dut.vh"  // SEED, the master (axi_lite_master.vh), the SoC
 
   // The rules on the RAM's port (it queues 4 responses, as the interconnect keeps 4 in
   // flight on the SoC's port) and on the IP's (its own holding registers: the defaults).
@@ -45,13 +39,7 @@ module specular_soc_outstanding_tb;
     .bvalid(dut.bvalid[0]), .bready(dut.bready[0]), .bresp(dut.bresp[1:0]),
     .arvalid(dut.arvalid[0]), .arready(dut.arready[0]), .araddr(dut.araddr[31:0]),
     .rvalid(dut.rvalid[0]), .rready(dut.rready[0]), .rdata(dut.rdata[31:0]), .rresp(dut.rresp[1:0]));
-  specular_ip_axi_props ip_port (
-    .aclk(aclk), .aresetn(aresetn),
-    .awvalid(dut.awvalid[1]), .awready(dut.awready[1]), .awaddr({17'd0, dut.awaddr[46:32]}),
-    .wvalid(dut.wvalid[1]), .wready(dut.wready[1]), .wdata(dut.wdata[63:32]), .wstrb(dut.wstrb[7:4]),
-    .bvalid(dut.bvalid[1]), .bready(dut.bready[1]), .bresp(dut.bresp[3:2]),
-    .arvalid(dut.arvalid[1]), .arready(dut.arready[1]), .araddr({17'd0, dut.araddr[46:32]}),
-    .rvalid(dut.rvalid[1]), .rready(dut.rready[1]), .rdata(dut.rdata[63:32]), .rresp(dut.rresp[3:2]));
+  `include "specular_soc_ip_port.vh"
 
   // ---- the locations the program touches ----
   localparam K_RAM = 0, K_OPERAND = 1, K_CONST = 2, K_HOLE = 3, K_NONE = 4, K_CONTROL = 5;
@@ -232,51 +220,46 @@ module specular_soc_outstanding_tb;
     end
   endfunction
 
-  initial begin : aw_channel
-    wait (started);
-    while (aw_next < wr_total) begin
-      while (aw_next >= ph_wr_end[phase] || aw_next - b_done >= MAX_IN_FLIGHT) @(posedge aclk);
-      #1 repeat (delay(0)) @(posedge aclk);
-      #1 awaddr = wr_addr[aw_next];
-      awvalid = 1'b1;
-      aw_shown = aw_next + 1;
-      @(posedge aclk);
-      while (!awready) @(posedge aclk);
-      aw_next = aw_next + 1;
-      #1 awvalid = 1'b0;
-      awaddr = 32'hDEAD_BEEF;
+  // One channel's requests in order (0 AW, 1 W, 2 AR; a process each): a request waits
+  // for its phase and for fewer than MAX_IN_FLIGHT unanswered before it, its VALID rises
+  // delay(0) cycles late and is held until READY. The counts aw_next, w_next, ar_next
+  // (requests taken) are the scoreboard's.
+  task automatic issue(input integer ch);
+    integer next;
+    begin
+      wait (started);
+      next = 0;
+      while (next < (ch == 2 ? rd_total : wr_total)) begin
+        while (next >= (ch == 2 ? ph_rd_end[phase] : ph_wr_end[phase]) ||
+               next - (ch == 2 ? r_done : b_done) >= MAX_IN_FLIGHT) @(posedge aclk);
+        #1 repeat (delay(0)) @(posedge aclk);
+        #1 case (ch)
+          0: begin awaddr = wr_addr[next]; awvalid = 1'b1; aw_shown = next + 1; end
+          1: begin
+            wdata = wr_data[next]; wstrb = wr_strb[next]; wvalid = 1'b1;
+            if (aw_shown <= next) w_first = w_first + 1;
+          end
+          default: begin araddr = rd_addr[next]; arvalid = 1'b1; end
+        endcase
+        @(posedge aclk);
+        while (!(ch == 0 ? awready : ch == 1 ? wready : arready)) @(posedge aclk);
+        next = next + 1;
+        case (ch)
+          0: aw_next = next;
+          1: w_next = next;
+          default: ar_next = next;
+        endcase
+        #1 case (ch)
+          0: begin awvalid = 1'b0; awaddr = 32'hDEAD_BEEF; end
+          1: begin wvalid = 1'b0; wdata = 32'hDEAD_BEEF; end
+          default: begin arvalid = 1'b0; araddr = 32'hDEAD_BEEF; end
+        endcase
+      end
     end
-  end
-  initial begin : w_channel
-    wait (started);
-    while (w_next < wr_total) begin
-      while (w_next >= ph_wr_end[phase] || w_next - b_done >= MAX_IN_FLIGHT) @(posedge aclk);
-      #1 repeat (delay(0)) @(posedge aclk);
-      #1 wdata = wr_data[w_next];
-      wstrb = wr_strb[w_next];
-      wvalid = 1'b1;
-      if (aw_shown <= w_next) w_first = w_first + 1;
-      @(posedge aclk);
-      while (!wready) @(posedge aclk);
-      w_next = w_next + 1;
-      #1 wvalid = 1'b0;
-      wdata = 32'hDEAD_BEEF;
-    end
-  end
-  initial begin : ar_channel
-    wait (started);
-    while (ar_next < rd_total) begin
-      while (ar_next >= ph_rd_end[phase] || ar_next - r_done >= MAX_IN_FLIGHT) @(posedge aclk);
-      #1 repeat (delay(0)) @(posedge aclk);
-      #1 araddr = rd_addr[ar_next];
-      arvalid = 1'b1;
-      @(posedge aclk);
-      while (!arready) @(posedge aclk);
-      ar_next = ar_next + 1;
-      #1 arvalid = 1'b0;
-      araddr = 32'hDEAD_BEEF;
-    end
-  end
+  endtask
+  initial issue(0);
+  initial issue(1);
+  initial issue(2);
   // B and R: READY low at random; each response checked, in order, as it is taken
   always @(posedge aclk) begin
     if (started && bvalid && bready) begin

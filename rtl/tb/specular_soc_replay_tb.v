@@ -15,17 +15,11 @@
 
 module specular_soc_replay_tb;
   parameter TRACE = "trace.txt";
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter [31:0] IP_BASE = 32'h4000_0000;
-  parameter [31:0] RAM_BASE = 32'h0000_0000;
-  parameter RAM_BYTES = 65536;
   parameter STALL = 0;
-  parameter SEED = 1;
   parameter SHOWN = 20;  // mismatches printed in full
 
-  `include "axi_lite_master.vh"
   localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
-  `include "specular_soc_dut.vh"
+  `include "specular_soc_dut.vh"  // SEED, the master (axi_lite_master.vh), the SoC
 
 
   integer accesses = 0, reads_compared = 0, mismatches = 0;

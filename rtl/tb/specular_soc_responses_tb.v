@@ -18,26 +18,16 @@
 module specular_soc_responses_tb;
   parameter VECTORS = "vectors.csv";
   parameter MAX_VECTORS = 64;
-  parameter ROM5_IMAGE = "rom5.hex", ROM38_IMAGE = "rom38.hex";
-  parameter [31:0] IP_BASE = 32'h4000_0000;
-  parameter [31:0] RAM_BASE = 32'h0000_0000;
-  parameter RAM_BYTES = 65536;
   parameter STALL = 1;
-  parameter SEED = 1;
 
-  `include "axi_lite_master.vh"
-  `include "specular_vectors.vh"
   localparam SOC_OPEN_WRITES = 2, SOC_OPEN_READS = 1;  // specular_soc_dut.vh's soc_port
-  `include "specular_soc_dut.vh"
+  `include "specular_soc_dut.vh"  // SEED, the master (axi_lite_master.vh), the SoC
+  localparam TB_NAME = "specular_soc_responses_tb";
+  localparam VECTOR_COS_W = 32, VECTOR_REG9_W = 37, VECTOR_OUT_W = 32;  // the bus words
+  `include "specular_vectors.vh"
 
   // The rules on the IP's port too (the SoC's: specular_soc_dut.vh).
-  specular_ip_axi_props ip_port (
-    .aclk(aclk), .aresetn(aresetn),
-    .awvalid(dut.awvalid[1]), .awready(dut.awready[1]), .awaddr({17'd0, dut.awaddr[46:32]}),
-    .wvalid(dut.wvalid[1]), .wready(dut.wready[1]), .wdata(dut.wdata[63:32]), .wstrb(dut.wstrb[7:4]),
-    .bvalid(dut.bvalid[1]), .bready(dut.bready[1]), .bresp(dut.bresp[3:2]),
-    .arvalid(dut.arvalid[1]), .arready(dut.arready[1]), .araddr({17'd0, dut.araddr[46:32]}),
-    .rvalid(dut.rvalid[1]), .rready(dut.rready[1]), .rdata(dut.rdata[63:32]), .rresp(dut.rresp[3:2]));
+  `include "specular_soc_ip_port.vh"
 
   // The IP's registers (docs/tlm.md's map), as offsets
   localparam [31:0] ID = 32'h000, VERSION = 32'h004, STATUS = 32'h00C, CONTROL = 32'h010;

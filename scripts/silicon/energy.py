@@ -953,6 +953,24 @@ def report(args):
         out["random_running"] = [{"results": j, "pj_per_result": run[j - 1] * scale}
                                  for j in sorted({max(1, len(run) // 8), len(run) // 4, len(run) // 2,
                                                   3 * len(run) // 4, len(run)})]
+    if args.per_result_out:
+        # each result's own energy, for the transaction-level model's fit (issue 61): the
+        # running energy's increment from the previous result's strobe to its own, scaled
+        # as random_dynamic_pj is, plus the leakage over that interval; the results before
+        # the stream's (lead_results: a testbench's own operations) left out, so that line
+        # k is the stimulus's k-th operation.
+        scale = (logic + rom) / final
+        lead = args.lead_results
+        if len(cps) <= lead:
+            raise SystemExit(f"energy.py: {len(cps)} results, not more than the {lead} before the stream")
+        with open(args.per_result_out, "w") as fo:
+            fo.write("# index\tpj\tclocks\n")
+            for k in range(lead, len(cps)):
+                t0, _, e0 = cps[k - 1] if k > 0 else (0.0, 0, 0.0)
+                t, _, e = cps[k]
+                dt_ns = t - t0  # energy_*.json's checkpoints are in ns
+                pj = (e - e0) * scale + sdf["leakage_nw"] * dt_ns * 1e-6
+                fo.write(f"{k - lead}\t{pj:.3f}\t{dt_ns / args.period:.2f}\n")
     json.dump(out, open(f"{d}/energy.json", "w"), indent=1)
     f = lambda x: f"{x:.1f}"
     lines = [f"# Energy per result: {args.top}", "",
@@ -1034,6 +1052,10 @@ def main():
     r.add_argument("--clocks-per-result", type=float, required=True)
     r.add_argument("--random-from", type=int, default=0,
                    help="results before the random operands (edge cases): 10 x groups, or 18")
+    r.add_argument("--per-result-out", help="write each result's energy (TSV: index in the stimulus, "
+                   "pJ dynamic as random_dynamic_pj plus the leakage over its interval, clocks)")
+    r.add_argument("--lead-results", type=int, default=0,
+                   help="results before the stimulus's first (the testbench's own): left out of --per-result-out")
     args = ap.parse_args()
     return {"dumper": dumper, "compute": compute, "sta-slews": sta_slews,
             "report": report}[args.cmd](args)

@@ -6,8 +6,8 @@
 # it exits 0 having printed its PASS line: every result equal to Core.
 #
 # The platform is a command that takes the ELF as its last argument (e.g.
-# "tiny32-vp --intercept-syscalls" of a riscv-vp built with the IP, docs/integration.md
-# section 10), named per build by an environment variable read here, at test time:
+# "tiny32-vp --intercept-syscalls" of a riscv-vp built with the IP,
+# docs/integration/riscv_vp.md), named per build by an environment variable read here, at test time:
 #   SPECULAR_RV32_VP_POLL, SPECULAR_RV32_VP_IRQ, SPECULAR_RV32_VP_IRQ_DIRECT
 # each falling back to SPECULAR_RV32_VP (one VP for every build it fits). None named:
 # exit 77, which ctest reports as skipped (Debian packages no RISC-V VP that can hold the

@@ -32,7 +32,7 @@ namespace firmware_driver {
 using sc_core::sc_time;
 using sc_core::SC_NS;
 
-/// Where the firmware sees the IP (docs/integration.md §10's riscv-vp window); the CPU's
+/// Where the firmware sees the IP (docs/integration/riscv_vp.md's window); the CPU's
 /// bus passes the offset to the target, as a router does.
 constexpr std::uintptr_t ip_base = 0x50000000u;
 inline const sc_time period(10, SC_NS);

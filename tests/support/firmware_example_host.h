@@ -67,7 +67,7 @@ struct Hart : sc_core::sc_module {
   std::size_t rising_edges = 0, edges_taken = 0, faults = 0, bad_resumes = 0, sleeps = 0;
   bool with_plic = false;
   /// The platform's memory interface syncs after each write to the IP (a remedy of
-  /// docs/integration.md section 10): done_irq's edges reach the PLIC before the next
+  /// docs/integration/riscv_vp.md): done_irq's edges reach the PLIC before the next
   /// instruction, instead of at the CPU's next sync (end of quantum, wfi).
   bool sync_after_writes = false;
   Plic plic;

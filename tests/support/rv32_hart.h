@@ -32,6 +32,7 @@
 
 #include "firmware_targets.h"
 #include "plic_model.h"
+#include "specular/tlm/energy_counter.h"
 
 namespace specular {
 namespace firmware_targets {
@@ -46,7 +47,11 @@ enum class IrqWiring {
 struct Rv32Hart : sc_core::sc_module {
   static constexpr std::uint32_t ram_size = 32u << 20, ip_base = 0x50000000u, ip_size = 0x8000u;
   static constexpr std::uint32_t clint_base = 0x02000000u, clint_size = 0x10000u;
+  /// The platform's energy counter (issue 61, specular/tlm/energy_counter.h).
+  static constexpr std::uint32_t energy_counter_base = 0x50010000u;
   tlm_utils::simple_initiator_socket<Rv32Hart, 32> socket{"socket"};
+  tlm_utils::simple_initiator_socket<Rv32Hart, 32> counter_socket{"counter_socket"};
+  std::unique_ptr<SpecularEnergyCounter> counter;
   tlm_utils::tlm_quantumkeeper keeper;
   std::unique_ptr<SpecularTarget> target;
   std::vector<std::uint8_t> ram = std::vector<std::uint8_t>(ram_size);
@@ -75,6 +80,8 @@ struct Rv32Hart : sc_core::sc_module {
     SPECULAR_HAS_PROCESS(Rv32Hart);
     target = make_target("ip", kind, Config{});
     wire(socket, *target, wiring);
+    counter = std::make_unique<SpecularEnergyCounter>("energy_counter", *target);
+    counter_socket.bind(counter->socket);
     target->on_done_irq([this](bool level) {
       if (level && !line && irq_wiring == IrqWiring::plic) plic.pending = true;  // the gateway's edge
       line = level;
@@ -126,18 +133,19 @@ struct Rv32Hart : sc_core::sc_module {
       clint_access(write, address - clint_base, value);
       return true;
     }
-    if (address < ip_base || address - ip_base >= ip_size) return false;
+    const bool to_counter = address >= energy_counter_base && address - energy_counter_base < energy_counter::size;
+    if (!to_counter && (address < ip_base || address - ip_base >= ip_size)) return false;
     tlm::tlm_generic_payload tx;
     std::uint32_t word = write ? value : 0xDEADBEEFu;
     tx.set_command(write ? tlm::TLM_WRITE_COMMAND : tlm::TLM_READ_COMMAND);
-    tx.set_address(address - ip_base);
+    tx.set_address(address - (to_counter ? energy_counter_base : ip_base));
     tx.set_data_ptr(reinterpret_cast<unsigned char*>(&word));
     tx.set_data_length(size);
     tx.set_streaming_width(size);
     tx.set_byte_enable_ptr(nullptr);
     tx.set_response_status(tlm::TLM_INCOMPLETE_RESPONSE);
     sc_core::sc_time delay = keeper.get_local_time();
-    socket->b_transport(tx, delay);
+    (to_counter ? counter_socket : socket)->b_transport(tx, delay);
     keeper.set(delay);
     if (!tx.is_response_ok()) return false;
     if (!write) value = size == 4 ? word : word & ((1u << (8 * size)) - 1u);

@@ -19,8 +19,8 @@ struct GeneratedTable {
 };
 
 inline std::vector<GeneratedTable> generated_tables() {
-  return {{"docs/tlm.md", "register-map", register_map_markdown},
-          {"docs/tlm.md", "error-causes", error_cause_markdown},
+  return {{"docs/tlm/registers.md", "register-map", register_map_markdown},
+          {"docs/tlm/registers.md", "error-causes", error_cause_markdown},
           {"docs/misuse.md", "address-map", address_map_markdown}};
 }
 

@@ -1,4 +1,4 @@
-# Specialised verilations of the synchronous variant (docs/rtl.md, "Specialised
+# Specialised verilations of the synchronous variant (docs/rtl/sync.md, "Specialised
 # verilation"): specular_device_sync with its configuration — pins 19 (h), 20 (a), 34
 # (carry), adder 8's saturation and the ROM 38 bank — fixed as Verilog parameters
 # (FIXED_CONFIG = 1), so Verilator folds them into the datapath instead of re-evaluating

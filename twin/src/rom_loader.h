@@ -1,7 +1,7 @@
 // ROM 5 and ROM 38 of a verilated device hold the library's words (specular::rom_images),
 // written here when a model is made: the twin reads no image file, so the installed
 // library works wherever it is copied (twin/rom_words.vlt keeps the memories writable;
-// docs/integration.md §9). Include after the verilated model's root header.
+// docs/integration/package.md). Include after the verilated model's root header.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 // A falling edge of pin 28 shown to a verilated synchronous device without an eval()
-// (docs/performance.md, "Specialised verilation"). Nothing in specular_device_sync reacts
+// (docs/performance/rtl.md, "Specialised verilation"). Nothing in specular_device_sync reacts
 // to the falling edge: Verilator 5.006 evaluates it only to remember that the clock was
 // low, in the root's `__Vtrigrprev__TOP__pin28_clk`, so that the next rising edge
 // triggers. Where the model has that member, writing it is that eval() without the

@@ -2,7 +2,7 @@
 /// The words of ROM 5 and ROM 38 as the RTL holds them, built once from the library's
 /// tables for both of their users: specular_romgen writes them as $readmemh images (for
 /// Icarus, Yosys and the silicon flow), and the twin (twin/) writes them straight into its
-/// verilated ROMs, so the installed twin reads no file (docs/integration.md §9).
+/// verilated ROMs, so the installed twin reads no file (docs/integration/package.md).
 #pragma once
 
 #include <cstdint>

@@ -9,6 +9,7 @@
 #include "specular/pin_harness.h"
 #include "specular/reference.h"
 #include "specular/tlm/driver.h"
+#include "specular/tlm/energy_counter.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
 #include "specular/tlm/register_map.h"

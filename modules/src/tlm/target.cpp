@@ -487,9 +487,11 @@ double SpecularTarget::charged_pj() const {
   return t.total_pj();
 }
 
-energy::EnergyTally SpecularTarget::energy() const {
+energy::EnergyTally SpecularTarget::energy() const { return energy(sc_core::sc_time_stamp()); }
+
+energy::EnergyTally SpecularTarget::energy(const sc_time& at) const {
   if (!meter_) return energy::EnergyTally{};
-  return meter_->tally(sc_core::sc_time_stamp() / period_);
+  return meter_->tally(at / period_);
 }
 
 void SpecularTarget::set_energy_model(bool on) {

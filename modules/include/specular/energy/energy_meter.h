@@ -38,7 +38,9 @@ class EnergyMeter {
   /// A meter charging `calibration`'s figures for a device whose buses have `formats`.
   EnergyMeter(Calibration calibration, const Formats& formats);
   ~EnergyMeter();
+  /// Moves the counts (and the meter's own Core, if it made one).
   EnergyMeter(EnergyMeter&&) noexcept;
+  /// Moves the counts (and the meter's own Core, if it made one).
   EnergyMeter& operator=(EnergyMeter&&) noexcept;
 
   /// One operation whose registers end at `in` and `r` (Core::run's result for `in`).

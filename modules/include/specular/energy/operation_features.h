@@ -30,7 +30,7 @@ inline RegisterState reset_state() {
 }
 
 /// How many features operation_features() gives.
-constexpr std::size_t feature_count = 10;
+constexpr std::size_t feature_count = 24;
 /// One value per feature, in the order of feature_names.
 using Features = std::array<double, feature_count>;
 /// The features' names, as fit.py's report and the calibration table name them.

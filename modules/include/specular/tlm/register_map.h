@@ -3,7 +3,7 @@
 /// name, offset, access, reset value, description on one line).
 ///
 /// Everything else reads this table: the target decodes addresses with it, the
-/// driver takes offsets from it, docs/tlm.md prints it (a test keeps them equal).
+/// driver takes offsets from it, docs/tlm/registers.md prints it (a test keeps them equal).
 /// Registers are 32 bits wide; data travels in the host's byte order, as the TLM-2.0
 /// generic payload's data array does.
 #pragma once
@@ -242,8 +242,9 @@ static_assert(info(Reg::operands).words == operand_words &&
 /// The row whose range holds `offset`, or nullptr (unmapped or not word-aligned).
 const RegisterInfo* decode(std::uint64_t offset);
 
-// The docs' tables, printed from the table above (docs/tlm.md and docs/misuse.md carry
-// exactly these between marker comments; specular_register_docs rewrites them).
+// The docs' tables, printed from the table above (docs/tlm/registers.md and
+// docs/misuse.md carry exactly these between marker comments; specular_register_docs
+// rewrites them).
 /// The register map: offset, name, access, reset, description.
 std::string register_map_markdown();
 /// The error causes (STATUS[15:8]).

@@ -81,6 +81,9 @@ class SpecularTarget : public sc_core::sc_module {
   /// the register reads and writes, and every clock period since time 0 (the IP has no
   /// clock gating). All zero when the model is off.
   energy::EnergyTally energy() const;
+  /// The same at time `at` (e.g. an access's annotated time, sc_time_stamp() + delay):
+  /// the clocks to `at`, the work charged so far.
+  energy::EnergyTally energy(const sc_core::sc_time& at) const;
   /// Whose gate-level figures the operations are charged: the drawn device for `pin`
   /// and `rtl`, the synchronous device (the IP's datapath) for the others.
   energy::Calibration energy_calibration() const { return calibration_; }

@@ -31,7 +31,7 @@ class AxiIpModel;
 /// set in STATUS (read back over AXI). done_irq follows the RTL's done_irq pin, each
 /// edge at its cycle. Debug reads are AXI reads of mapped words clocked in zero
 /// simulated time; debug writes are refused (0 bytes). `execute` is never called.
-/// docs/rtl_ip.md ("TLM axi target") lists where it differs from `lt`.
+/// docs/rtl_ip/tlm_axi.md ("TLM axi target") lists where it differs from `lt`.
 /// Widths other than the defaults are refused with std::invalid_argument (the IP is
 /// verilated at the default widths only).
 class SpecularAxiTarget : public SpecularTarget {

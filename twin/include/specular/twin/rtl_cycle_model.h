@@ -25,7 +25,7 @@ namespace specular {
 /// with any other widths is refused with std::invalid_argument.
 class RtlCycleModel {
  public:
-  /// A Config with a specialised verilation (docs/rtl.md, "Specialised verilation")
+  /// A Config with a specialised verilation (docs/rtl/sync.md, "Specialised verilation")
   /// runs on it unless `allow_fixed` is false.
   explicit RtlCycleModel(const Config& config = Config{}, bool allow_fixed = true);
   ~RtlCycleModel();

@@ -60,7 +60,7 @@ class RtlDeviceBase : public DevicePins {
   /// Writes the last instant and closes the file open_vcd() opened (if any).
   void close_vcd();
   /// Whether the model behind the pins is a verilation specialised to config()
-  /// (docs/rtl.md, "Specialised verilation"): without tracing (allow_tracing, open_vcd).
+  /// (docs/rtl/sync.md, "Specialised verilation"): without tracing (allow_tracing, open_vcd).
   bool fixed() const;
 
   // ---- what the harness watches (observation outputs both twins have) ----

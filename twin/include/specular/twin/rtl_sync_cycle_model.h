@@ -1,7 +1,7 @@
 /// \file
 /// The synchronous variant of the device (rtl/device/specular_device_sync.v) as plain C++:
 /// verilated without SystemC and without trace code, clocked here with its protocol
-/// (docs/rtl.md, "The synchronous variant"). The fast cycle model: one clock, so each
+/// (docs/rtl/sync.md, "The synchronous variant"). The fast cycle model: one clock, so each
 /// clock period costs two evaluations and nothing iterates over gated clocks.
 #pragma once
 
@@ -27,7 +27,7 @@ namespace specular {
 ///
 /// Two kinds of verilation: the general model, whose configuration (pins 19, 20, 34,
 /// saturation, ROM 38 bank) is a set of inputs, and specialised ones with it fixed as
-/// Verilog parameters (docs/rtl.md, "Specialised verilation"; the default device's
+/// Verilog parameters (docs/rtl/sync.md, "Specialised verilation"; the default device's
 /// always, others with the CMake list SPECULAR_RTL_SYNC_FIXED). A Config that matches a
 /// specialised build runs on it unless `allow_fixed` is false.
 class RtlSyncCycleModel {

@@ -1,0 +1,125 @@
+// specular_energy_features: the energy model's features of each operation of an operand
+// stream (issue 61, docs/energy/calibration.md), computed by the C++ the model itself
+// charges with (specular::energy::operation_features), so that the fit
+// (scripts/energy_model/fit.py) and the model cannot differ.
+//
+//   specular_energy_features [--model] STREAM [OUT]
+//
+// STREAM: one operation a line, `cos n r g b` in hex (gatesim.sh --stimulus's format,
+// specular_variant_vectors' first five columns; cos a code of 17 bits, 0x10000 = 1.0;
+// further columns ignored). Each runs through specular::Core at the patent's policies
+// (the gate-level testbenches' patent/patent/clamp), starting from the registers after
+// reset. OUT (default stdout): a TSV, a header `index` and the feature names, then one
+// line per operation. --model adds the model's pJ of each operation as compiled
+// (OperationEnergy with calibration.h): columns pj_synchronous and pj_drawn.
+// Exit status: 0 written, 2 bad input (the line and the value named).
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "specular/core.h"
+#include "specular/energy/operation_energy.h"
+#include "specular/energy/operation_features.h"
+
+namespace {
+
+struct BadInput {
+  std::string message;
+};
+
+specular::code_t field(const std::string& text, const char* name, long long lo, long long hi,
+                       const std::string& where) {
+  std::size_t used = 0;
+  long long v = -1;
+  try {
+    v = std::stoll(text, &used, 16);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || v < lo || v > hi) {
+    std::ostringstream m;
+    m << where << ": " << name << " '" << text << "' is not a hex code in [0x" << std::hex << lo
+      << ", 0x" << hi << "]";
+    throw BadInput{m.str()};
+  }
+  return static_cast<specular::code_t>(v);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const bool help = argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  const bool model = argc >= 2 && std::string(argv[1]) == "--model";
+  if (model) {
+    --argc;
+    ++argv;
+  }
+  if (help || argc < 2 || argc > 3 || argv[1][0] == '-') {
+    std::fprintf(help ? stdout : stderr,
+                 "usage: specular_energy_features [--model] STREAM [OUT]\n"
+                 "  STREAM: 'cos n r g b' in hex per line; OUT (default stdout): the features' TSV\n"
+                 "  --model: also each operation's pJ by the compiled model, both calibrations\n");
+    return help ? 0 : 2;
+  }
+  std::ifstream in(argv[1]);
+  if (!in) {
+    std::fprintf(stderr, "specular_energy_features: cannot read '%s'\n", argv[1]);
+    return 2;
+  }
+  const specular::Core core;  // the patent's widths and policies
+  const specular::Formats& f = core.formats();
+  std::ostringstream text;
+  text << "index";
+  for (const char* name : specular::energy::feature_names) text << '\t' << name;
+  if (model) text << "\tpj_synchronous\tpj_drawn";
+  text << '\n';
+  specular::energy::OperationEnergy synchronous(specular::energy::Calibration::synchronous_device, f);
+  specular::energy::OperationEnergy drawn(specular::energy::Calibration::drawn_device, f);
+  specular::energy::RegisterState before = specular::energy::reset_state();
+  std::string line;
+  int number = 0, index = 0;
+  try {
+    while (std::getline(in, line)) {
+      ++number;
+      std::istringstream words(line);
+      std::vector<std::string> w;
+      for (std::string s; words >> s;) w.push_back(s);
+      if (w.empty()) continue;
+      const std::string where = std::string(argv[1]) + ":" + std::to_string(number);
+      if (w.size() < 5) throw BadInput{where + ": " + std::to_string(w.size()) + " fields, expected 'cos n r g b' in hex"};
+      specular::Operands op;
+      op.cos = field(w[0], "cos", 0, 0x10000, where);
+      op.n = field(w[1], "n", 1, 1000, where);
+      static const char* channels[3] = {"R", "G", "B"};
+      for (int ch = 0; ch < 3; ++ch) op.rgb[ch] = field(w[2 + ch], channels[ch], 0, 255, where);
+      const specular::energy::RegisterState after{op, core.run(op)};
+      const specular::energy::Features x = specular::energy::operation_features(f, before, after);
+      before = after;
+      text << index++;
+      for (double v : x) text << '\t' << v;
+      if (model) text << '\t' << synchronous.next(after.in, after.r) << '\t' << drawn.next(after.in, after.r);
+      text << '\n';
+    }
+  } catch (const BadInput& e) {
+    std::fprintf(stderr, "specular_energy_features: %s\n", e.message.c_str());
+    return 2;
+  }
+  if (index == 0) {
+    std::fprintf(stderr, "specular_energy_features: '%s' holds no operation\n", argv[1]);
+    return 2;
+  }
+  if (argc == 3) {
+    std::ofstream out(argv[2]);
+    out << text.str();
+    if (!out) {
+      std::fprintf(stderr, "specular_energy_features: cannot write '%s'\n", argv[2]);
+      return 2;
+    }
+  } else {
+    std::cout << text.str();
+  }
+  return 0;
+}

@@ -20,15 +20,18 @@
 #include <cstdlib>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "bench.h"
+#include "cli.h"
 #include "summary.h"
 #include "specular/systemc.h"
 #include "specular/variants/variant.h"
+#include "usage_error.h"
 
 namespace specular_bench {
 namespace {
@@ -211,19 +214,6 @@ const Model* find_model(const std::string& name) {
   for (const Model& m : extra_models())
     if (m.name == name) return &m;
   return nullptr;
-}
-
-std::size_t parse_count(const std::string& option, const std::string& text) {
-  std::size_t used = 0;
-  unsigned long long value = 0;
-  try {
-    value = std::stoull(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || value == 0)
-    throw std::invalid_argument(option + " " + text + ": expected a positive integer");
-  return static_cast<std::size_t>(value);
 }
 
 /// One figure line of a child: `name: value unit` (value's text kept for checksums).
@@ -473,57 +463,45 @@ int run_all(bool quick, int repetitions, std::uint64_t seed, const std::string& 
   return failed.empty() && exact ? 0 : 1;
 }
 
-void usage(std::ostream& out) {
-  out << "usage: specular_bench [--all | --variants] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
-         "       specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"
-         "       specular_bench --list\n"
-         "Prints one `name: value unit` line per figure. --all (the default) runs every\n"
-         "model in its own child process and adds the ratios to std::pow; --quick is a\n"
-         "smoke test with few operations. --repetitions N (1..100; default 5, --quick 1):\n"
-         "every model runs N times, interleaved, and each figure is printed as its median\n"
-         "[min..max]; a target is met, not met or within noise. --vcd STEM: where the traced model writes\n"
-         "STEM.vcd (deleted after measuring its size unless --keep-vcd). --variants: only\n"
-         "std::pow, the core and each design variant's C++ model (variant_NAME_vs_core).\n";
-}
-
-int bench_main(int argc, char** argv) {
+/// The command line, declared (run_support/cli.h).
+struct BenchOptions {
   std::string model;
-  bool quick = false, list = false, variants_only = false;
-  Plan plan;
+  bool all = false, quick = false, list = false, variants_only = false;
   std::size_t ops = 0;
   int repetitions = 0;  // 0: the default, 5 (1 with --quick)
-  plan.vcd_path = std::string(std::getenv("TMPDIR") != nullptr ? std::getenv("TMPDIR") : "/tmp") +
-                  "/specular_bench_" + std::to_string(::getpid());
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + ": missing value");
-      return argv[++i];
-    };
-    if (arg == "--all") model.clear();
-    else if (arg == "--quick") quick = true;
-    else if (arg == "--variants") variants_only = true;
-    else if (arg == "--list") list = true;
-    else if (arg == "--model") model = value();
-    else if (arg == "--ops") ops = parse_count(arg, value());
-    else if (arg == "--repetitions") {
-      const std::string text = value();
-      std::size_t n = 0;
-      try {
-        n = parse_count(arg, text);
-      } catch (const std::invalid_argument&) {
-        n = 0;
-      }
-      if (n == 0 || n > 100) throw std::invalid_argument(arg + " " + text + ": expected an integer in 1..100");
-      repetitions = static_cast<int>(n);
-    } else if (arg == "--reps") plan.repetitions = static_cast<int>(parse_count(arg, value()));
-    else if (arg == "--seed") plan.seed = parse_count(arg, value());
-    else if (arg == "--verify") plan.verify_ops = parse_count(arg, value());
-    else if (arg == "--vcd") plan.vcd_path = value();
-    else if (arg == "--keep-vcd") plan.keep_vcd = true;
-    else if (arg == "--help" || arg == "-h") { usage(std::cout); return 0; }
-    else throw std::invalid_argument("unknown option " + arg);
-  }
+};
+
+void add_options(CLI::App& app, BenchOptions& o, Plan& plan) {
+  namespace cli = specular::cli;
+  app.add_flag("--all", o.all, "every model in its own child process, with the ratios to std::pow (the default)");
+  app.add_flag("--variants", o.variants_only,
+               "only std::pow, the core and each design variant's C++ model (variant_NAME_vs_core)");
+  app.add_flag("--quick", o.quick, "a smoke test with few operations");
+  app.add_option("--repetitions", o.repetitions,
+                 "every model runs N times, interleaved, and each figure is printed as its median "
+                 "[min..max]; a target is met, not met or within noise (default 5, --quick 1)")
+      ->type_name("N")
+      ->check(cli::integer_in(1, 100));
+  app.add_flag("--list", o.list, "the model names");
+  app.add_option("--model", o.model, "one model in this process (what a child runs)")->type_name("NAME");
+  const auto count = [&](const std::string& name, auto& target, long long max, const std::string& help) {
+    app.add_option(name, target, help)->type_name("N")->check(cli::integer_in(1, max));
+  };
+  count("--ops", o.ops, 1000000000000LL, "--model: operations (default the model's)");
+  count("--reps", plan.repetitions, 1000000, "--model: repetitions in this process");
+  count("--seed", plan.seed, std::numeric_limits<long long>::max(), "the operands' seed");
+  count("--verify", plan.verify_ops, 1000000000000LL, "--model: operations compared with the core");
+  app.add_option("--vcd", plan.vcd_path,
+                 "where the traced model writes STEM.vcd (deleted after measuring its size unless --keep-vcd)")
+      ->type_name("STEM");
+  app.add_flag("--keep-vcd", plan.keep_vcd, "keep the traced model's VCD");
+}
+
+int bench_main(const BenchOptions& o, Plan plan) {
+  const std::string& model = o.all ? std::string() : o.model;
+  const bool quick = o.quick, list = o.list, variants_only = o.variants_only;
+  const std::size_t ops = o.ops;
+  const int repetitions = o.repetitions;
   if (list) {
     for (const Model& m : models()) std::cout << m.name << ": " << m.what << "\n";
     return 0;
@@ -536,7 +514,7 @@ int bench_main(int argc, char** argv) {
   if (m == nullptr) {
     std::string names;
     for (const Model& each : models()) names += " " + each.name;
-    throw std::invalid_argument("unknown model " + model + "; choose one of:" + names);
+    throw specular::tb::UsageError("--model: unknown model " + model + "; choose one of:" + names);
   }
   plan.ops = ops != 0 ? ops : (quick ? m->quick_ops : m->full_ops);
   if (plan.verify_ops == 0 || plan.verify_ops > plan.ops) plan.verify_ops = std::min(verify_ops, plan.ops);
@@ -550,13 +528,28 @@ int bench_main(int argc, char** argv) {
 }  // namespace specular_bench
 
 int sc_main(int argc, char** argv) {
-  try {
-    return specular_bench::bench_main(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "specular_bench: " << e.what() << "\n";
-    specular_bench::usage(std::cerr);
-    return 2;
-  }
+  CLI::App app{"specular_bench: results per second of every model, each in its own process; prints one\n"
+               "`name: value unit` line per figure (docs/performance.md).\n"
+               "  specular_bench [--all | --variants] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
+               "  specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"
+               "  specular_bench --list",
+               "specular_bench"};
+  specular::cli::house_rules(app, "Exit status: 0 done, 1 a model failed or differs from the core, 2 bad usage.");
+  specular_bench::BenchOptions options;
+  specular_bench::Plan plan;
+  plan.vcd_path = std::string(std::getenv("TMPDIR") != nullptr ? std::getenv("TMPDIR") : "/tmp") +
+                  "/specular_bench_" + std::to_string(::getpid());
+  specular_bench::add_options(app, options, plan);
+  return specular::cli::run(app, argc, argv, [&] {
+    try {
+      return specular_bench::bench_main(options, plan);
+    } catch (const specular::tb::UsageError&) {
+      throw;  // cli::run: exit 2
+    } catch (const std::exception& e) {
+      std::cerr << "specular_bench: " << e.what() << "\n";
+      return 2;
+    }
+  });
 }
 
 int main(int argc, char** argv) {

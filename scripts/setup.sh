@@ -32,6 +32,8 @@ set -euo pipefail
 #                                       extracts, netgen compares (LVS), klayout draws the die
 #   nlohmann-json3-dev                  JSON: specular_tb's report settings and summary, the partial
 #                                       results of sharded runs (--shard, --partial, --merge)
+#   libcli11-dev                        every command's options, --help, --version and
+#                                       specular_tb's --config (run_support/cli.h)
 #   slurm-wlm, munge, jq                scripts/farm.sh on Slurm, scripts/slurm_cluster.sh (a
 #                                       single-node cluster) and its test tests/farm/farm_test.sh
 #                                       (jq compares the merged and unsharded JSON)
@@ -48,6 +50,7 @@ PACKAGES=(
   qflow-tech-osu018 opensta bc
   qflow graywolf qrouter magic netgen-lvs tcsh klayout  # scripts/layout.sh: place, route, DRC, LVS, the die's picture
   nlohmann-json3-dev
+  libcli11-dev
   slurm-wlm munge jq
   z3  # yosys-smtbmc's solver: the AXI4-Lite properties of specular_ip_axi proved by bounded model checking (rtl/formal/, docs/rtl_ip.md)
   python3-lxml  # tests/ipxact: reads the IP-XACT component back with an XML library (docs/ipxact.md)

@@ -23,6 +23,7 @@ constexpr std::size_t random_count_max = 100000000;
 
 struct Options {
   bool help = false;
+  bool version = false;                            ///< --version
   StimulusKind stimulus = StimulusKind::point;
   double cos = 0;                                  ///< --cos (checked: [0, 1])
   long long n = 0;                                 ///< --n (checked: [1, 1000])
@@ -56,11 +57,12 @@ struct Options {
 /// whose every operation fails from filling a disk.
 constexpr std::size_t failure_traces_max = 1000;
 
-/// Parses argv[1..] (without the program name). Throws UsageError with a message
-/// that names the option, the bad value and what is allowed.
+/// Parses argv[1..] (without the program name) and --config's file, through CLI11
+/// (run_support/cli.h). Throws UsageError with a message that names the option, the bad
+/// value and what is allowed (and, for a value from --config, the file's line).
 Options parse_options(const std::vector<std::string>& args);
 
-/// The --help text.
+/// The --help text, from the declarations.
 std::string help_text();
 
 }  // namespace tb

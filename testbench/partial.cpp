@@ -4,6 +4,7 @@
 #include <optional>
 #include <utility>
 
+#include "cli.h"
 #include "output_file.h"
 #include "run_models.h"
 #include "usage_error.h"
@@ -83,23 +84,32 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
   std::vector<std::string> files;
   OutputFormat format = OutputFormat::text;
   std::string output_path, partial_path;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--format" || a == "--output" || a == "--partial") {
-      if (i + 1 >= args.size()) throw UsageError("--merge: option " + a + " needs a value");
-      const std::string& value = args[++i];
-      if (a == "--format") format = parse_output_format(value);
-      else if (value.empty()) throw UsageError("--merge: " + a + ": the file name is empty");
-      else if (a == "--output") output_path = value;
-      else partial_path = value;
-    } else if (a.rfind("--", 0) == 0) {
-      throw UsageError("--merge: unknown option '" + a +
-                       "' (allowed: --format text|json, --output FILE, --partial FILE)");
-    } else {
-      files.push_back(a);
-    }
+  CLI::App app{"specular_tb --merge: every shard's partial result merged into the unsharded run's report\n"
+               "(refusing a missing, duplicated or mismatched shard).",
+               "specular_tb --merge"};
+  cli::house_rules(app);
+  const auto non_empty = CLI::Validator(
+      [](std::string& v) { return v.empty() ? std::string("the file name is empty") : std::string(); }, "");
+  app.add_option("FILE", files, "the partial results, one per shard")->required()->expected(1, -1);
+  cli::add_parsed(app, "--format", format, parse_output_format, "text (default) or json")->type_name("text|json");
+  app.add_option("--output", output_path, "write the report there")->type_name("FILE")->check(non_empty);
+  app.add_option("--partial", partial_path, "also write the merged partial result")->type_name("FILE")->check(non_empty);
+  try {
+    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+    app.parse(reversed);
+  } catch (const CLI::Success&) {  // --help, --version
+    out << (app.get_help_ptr()->count() ? app.help() : std::string("specular_tb ") + cli::version() + "\n");
+    return 0;
+  } catch (const CLI::RequiredError&) {
+    throw UsageError("--merge needs the partial files of every shard (FILE...)");
+  } catch (const CLI::ParseError& e) {
+    std::string message = cli::error_text(app, e, args);
+    const auto see = message.find(" (see --help)");  // run_testbench says where to look
+    if (see != std::string::npos) message.erase(see, 13);
+    throw UsageError("--merge: " + message);
+  } catch (const UsageError& e) {
+    throw UsageError(std::string("--merge: ") + e.what());
   }
-  if (files.empty()) throw UsageError("--merge needs the partial files of every shard (FILE...)");
   if (format == OutputFormat::csv)
     throw UsageError("--merge: --format csv is not available (a merge has no rows): text or json");
 

@@ -14,6 +14,7 @@
 #include <optional>
 #include <utility>
 
+#include "cli.h"
 #include "input.h"
 #include "options.h"
 #include "output_file.h"
@@ -319,6 +320,10 @@ int run_testbench(const std::vector<std::string>& args, std::ostream& out, std::
     const Options options = parse_options(args);
     if (options.help) {
       out << help_text();
+      return exit_pass;
+    }
+    if (options.version) {
+      out << "specular_tb " << cli::version() << '\n';
       return exit_pass;
     }
     return run(options, out, err, tap);

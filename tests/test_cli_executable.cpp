@@ -132,6 +132,49 @@ TEST(CliExecutable, NonNumberAndUnknownOptionExitTwo) {
   EXPECT_NE(r.err.find("--frobnicate"), std::string::npos) << r.err;
 }
 
+// --config FILE (CLI11's, TOML or INI): every long option settable there; the command
+// line wins; a bad value in it is named with the file's line and exits 2, nothing run.
+TEST(CliExecutable, ConfigFileSetsOptionsAndItsBadValuesAreNamed) {
+  const fs::path dir = scratch("config");
+  const fs::path toml = dir / "run.toml";
+  std::ofstream(toml) << "# one point through the core, as CSV\n"
+                         "cos = 1\nn = 1000\nmodel = \"core\"\nformat = \"csv\"\nquiet = true\n";
+  const Outcome from_file = run_tb("--config '" + toml.string() + "'", dir);
+  const Outcome on_line = run_tb("--cos 1 --n 1000 --model core --format csv --quiet", dir);
+  EXPECT_EQ(from_file.status, 0) << from_file.err;
+  EXPECT_EQ(from_file.out, on_line.out);
+  EXPECT_EQ(from_file.out.rfind("cos,n,r,g,b,", 0), 0u) << from_file.out;
+  // The command line wins over the file: n = 10 replaces its 1000.
+  const Outcome wins = run_tb("--config '" + toml.string() + "' --n 10", dir);
+  EXPECT_EQ(wins.status, 0) << wins.err;
+  EXPECT_NE(wins.out.find("\n1,10,255,255,255,"), std::string::npos) << wins.out;
+  // INI, the same keys; a flag and a width.
+  const fs::path ini = dir / "run.ini";
+  std::ofstream(ini) << "; a random run at another width\nrandom=100\nmodel=core\nquiet=true\n"
+                        "width=rom5_word_bits=20\n";
+  const Outcome ini_run = run_tb("--config '" + ini.string() + "'", dir);
+  const Outcome ini_line = run_tb("--random 100 --model core --quiet --width rom5_word_bits=20", dir);
+  EXPECT_EQ(ini_run.status, 0) << ini_run.err;
+  EXPECT_NE(ini_run.out.find("100 computation(s) from --random 100"), std::string::npos) << ini_run.out;
+  EXPECT_EQ(ini_run.out.substr(0, ini_run.out.find("run time")), ini_line.out.substr(0, ini_line.out.find("run time")));
+  // A bad value on line 3: the file, the line, the option, the value and the range.
+  const fs::path bad = dir / "bad.toml";
+  std::ofstream(bad) << "cos = 0.5\nmodel = \"core\"\nn = 1001\n";
+  const Outcome refused = run_tb("--config '" + bad.string() + "'", dir);
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_NE(refused.err.find(bad.string() + ":3: --n: n = 1001 is outside the allowed range [1, 1000]"),
+            std::string::npos) << refused.err;
+  EXPECT_TRUE(refused.out.empty()) << refused.out;
+  // An unknown key and a missing file: exit 2, named.
+  std::ofstream(dir / "unknown.toml") << "colour = \"red\"\n";
+  const Outcome unknown = run_tb("--config '" + (dir / "unknown.toml").string() + "' --sweep", dir);
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("colour"), std::string::npos) << unknown.err;
+  const Outcome missing = run_tb("--config '" + (dir / "none.toml").string() + "' --sweep", dir);
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("none.toml"), std::string::npos) << missing.err;
+}
+
 TEST(CliExecutable, UnwritableOutputExitsTwoAndLeavesNoFile) {
   const fs::path dir = scratch("unwritable");
   const fs::path target = dir / "missing_dir" / "out.csv";

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -52,14 +53,21 @@ TEST(TbProgress, ToolPrintsTheLineAndRefusesBadValues) {
   EXPECT_EQ(named.out, "  gatesim: 2 / 9 periods tried (22.2%), 0.0 /s, 5:50 left\n");
   const Outcome seconds = run_command("'" + tool + "' 5 10 soon", dir, "seconds");
   EXPECT_EQ(seconds.status, 2);
-  EXPECT_NE(seconds.err.find("SECONDS 'soon'"), std::string::npos) << seconds.err;
+  EXPECT_NE(seconds.err.find("SECONDS: 'soon' is not a number"), std::string::npos) << seconds.err;
   EXPECT_NE(seconds.err.find("from 0 to 1e9"), std::string::npos) << seconds.err;
   const Outcome done = run_command("'" + tool + "' -1 10 1", dir, "done");
   EXPECT_EQ(done.status, 2);
-  EXPECT_NE(done.err.find("DONE '-1'"), std::string::npos) << done.err;
+  EXPECT_NE(done.err.find("DONE: '-1' is not a whole number"), std::string::npos) << done.err;
   const Outcome count = run_command("'" + tool + "' 1 2", dir, "count");
   EXPECT_EQ(count.status, 2);
-  EXPECT_NE(count.err.find("3 to 5 arguments, got 2"), std::string::npos) << count.err;
+  EXPECT_NE(count.err.find("SECONDS is required"), std::string::npos) << count.err;
+  const Outcome extra = run_command("'" + tool + "' 1 2 3 u l more", dir, "extra");
+  EXPECT_EQ(extra.status, 2);
+  EXPECT_NE(extra.err.find("unexpected argument 'more'"), std::string::npos) << extra.err;
+  const Outcome version = run_command("'" + tool + "' --version", dir, "version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_TRUE(std::regex_match(version.out, std::regex("specular_progress [0-9]+\\.[0-9]+\\.[0-9]+\n")))
+      << version.out;
 }
 
 // The soak's stages: no progress line when standard error is a file, none with --quiet

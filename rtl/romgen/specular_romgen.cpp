@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
+#include "parse_values.h"
 #include "specular/arith.h"
 #include "specular/rom38_banks.h"
 #include "specular/rom_images.h"
@@ -34,6 +36,7 @@
 #include "specular/format.h"
 #include "specular/variants/exp2_unit.h"
 #include "specular/variants/reciprocal.h"
+#include "usage_error.h"
 
 namespace {
 
@@ -41,30 +44,16 @@ using specular::code_t;
 using specular::Formats;
 using specular::Widths;
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+using specular::tb::UsageError;
 
-int parse_int(const std::string& what, const std::string& text) {
-  std::size_t used = 0;
-  int value = 0;
-  try {
-    value = std::stoi(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size())
-    throw UsageError(what + " = '" + text + "' is not an integer");
-  return value;
-}
-
+/// --width NAME=VALUE into `widths` (the names and ranges of specular::set_width).
 void set_width(Widths& widths, const std::string& assignment) {
   const std::size_t eq = assignment.find('=');
-  if (eq == std::string::npos) throw UsageError("--width " + assignment + ": expected NAME=VALUE");
+  if (eq == std::string::npos) throw UsageError("--width: '" + assignment + "' is not NAME=VALUE");
   const std::string name = assignment.substr(0, eq);
-  const int value = parse_int("--width " + name, assignment.substr(eq + 1));
+  const long long value = specular::tb::parse_integer(assignment.substr(eq + 1), "--width " + name, "[0, 63]");
   try {
-    specular::set_width(widths, name, value);
+    specular::set_width(widths, name, static_cast<int>(value));
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--width: ") + e.what());
   }
@@ -77,32 +66,31 @@ struct Options {
   std::string check_path;
 };
 
-Options parse(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw UsageError(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--out-dir") o.out_dir = value();
-    else if (arg == "--check") o.check_path = value();
-    else if (arg == "--bank-bits") o.bank_bits = parse_int("--bank-bits", value());
-    else if (arg == "--width") set_width(o.widths, value());
-    else throw UsageError("unknown option '" + arg + "' (expected --out-dir, --check, --bank-bits, --width)");
-  }
-  if (o.out_dir.empty() == o.check_path.empty())
-    throw UsageError("give exactly one of --out-dir DIR or --check DUMP");
-  if (o.bank_bits < specular::rom38_bank_bits || o.bank_bits > 8)
-    throw UsageError("--bank-bits = " + std::to_string(o.bank_bits) + " is outside the allowed range [" +
-                     std::to_string(specular::rom38_bank_bits) + ", 8] (one bank per constants x " +
-                     "normalisation pair)");
-  try {
-    o.widths.validate();
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-  return o;
+/// Declares the options on `app` (run_support/cli.h), each writing into `o`.
+void add_options(CLI::App& app, Options& o) {
+  CLI::Option_group* mode = app.add_option_group("mode", "exactly one of");
+  mode->add_option("--out-dir", o.out_dir,
+                   "write DIR/rom5.hex (2^rom5_addr_bits words), DIR/rom38.hex (2^B banks of 2^n_bits "
+                   "words; bank b = Normalisation value b, unused banks zero), DIR/pins.hex, DIR/exp2.hex "
+                   "(variant exp2's exp2 unit) and DIR/recip.hex (variant schlick's reciprocal table)")
+      ->type_name("DIR");
+  mode->add_option("--check", o.check_path,
+                   "compare every \"rom5 BUS LOG2\" and \"rom38 BANK N K\" line (hex) of DUMP with the "
+                   "tables; exit 1 on the first difference or when an address was never read")
+      ->type_name("DUMP");
+  mode->require_option(1);
+  app.add_option("--bank-bits", o.bank_bits, "ROM 38's bank address bits (one bank per constants x normalisation pair)")
+      ->type_name("B")
+      ->capture_default_str()
+      ->check(specular::cli::integer_in(specular::rom38_bank_bits, 8));
+  app.add_option_function<std::vector<std::string>>(
+         "--width",
+         [&o](const std::vector<std::string>& values) {
+           for (const std::string& v : values) set_width(o.widths, v);
+         },
+         "a bus width other than docs/design.md's, once per width")
+      ->type_name("NAME=VALUE")
+      ->allow_extra_args(false);
 }
 
 /// One word per line, as many hex digits as the width needs.
@@ -260,16 +248,27 @@ int check_dump(const Options& o) {
 extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
-  try {
-    const Options o = parse(argc, argv);
-    if (!o.check_path.empty()) return check_dump(o);
-    write_images(o);
-    return 0;
-  } catch (const UsageError& e) {
-    std::cerr << "specular_romgen: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "specular_romgen: internal error: " << e.what() << '\n';
-    return 3;
-  }
+  CLI::App app{"The ROM images of the RTL twin, written once from the C++ tables, or a dump the RTL wrote\n"
+               "checked against them.",
+               "specular_romgen"};
+  specular::cli::house_rules(app, "Exit status: 0 done, 1 a difference (--check), 2 bad option or file, 3 internal.");
+  Options o;
+  add_options(app, o);
+  return specular::cli::run(app, argc, argv, [&] {
+    try {
+      o.widths.validate();
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--width: ") + e.what());
+    }
+    try {
+      if (!o.check_path.empty()) return check_dump(o);
+      write_images(o);
+      return 0;
+    } catch (const UsageError&) {
+      throw;  // cli::run: exit 2
+    } catch (const std::exception& e) {
+      std::cerr << "specular_romgen: internal error: " << e.what() << '\n';
+      return 3;
+    }
+  });
 }

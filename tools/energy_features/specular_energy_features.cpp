@@ -13,22 +13,21 @@
 // line per operation. --model adds the model's pJ of each operation as compiled
 // (OperationEnergy with calibration.h): columns pj_synchronous and pj_drawn.
 // Exit status: 0 written, 2 bad input (the line and the value named).
-#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "specular/core.h"
 #include "specular/energy/operation_energy.h"
 #include "specular/energy/operation_features.h"
+#include "usage_error.h"
 
 namespace {
 
-struct BadInput {
-  std::string message;
-};
+using BadInput = specular::tb::UsageError;
 
 specular::code_t field(const std::string& text, const char* name, long long lo, long long hi,
                        const std::string& where) {
@@ -43,32 +42,16 @@ specular::code_t field(const std::string& text, const char* name, long long lo, 
     std::ostringstream m;
     m << where << ": " << name << " '" << text << "' is not a hex code in [0x" << std::hex << lo
       << ", 0x" << hi << "]";
-    throw BadInput{m.str()};
+    throw BadInput(m.str());
   }
   return static_cast<specular::code_t>(v);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const bool help = argc == 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
-  const bool model = argc >= 2 && std::string(argv[1]) == "--model";
-  if (model) {
-    --argc;
-    ++argv;
-  }
-  if (help || argc < 2 || argc > 3 || argv[1][0] == '-') {
-    std::fprintf(help ? stdout : stderr,
-                 "usage: specular_energy_features [--model] STREAM [OUT]\n"
-                 "  STREAM: 'cos n r g b' in hex per line; OUT (default stdout): the features' TSV\n"
-                 "  --model: also each operation's pJ by the compiled model, both calibrations\n");
-    return help ? 0 : 2;
-  }
-  std::ifstream in(argv[1]);
-  if (!in) {
-    std::fprintf(stderr, "specular_energy_features: cannot read '%s'\n", argv[1]);
-    return 2;
-  }
+/// The features (and with `model` the model's pJ) of each operation of `stream`, as TSV
+/// to `out_path` (empty: standard output).
+int features(const std::string& stream, const std::string& out_path, bool model) {
+  std::ifstream in(stream);
+  if (!in) throw BadInput("cannot read '" + stream + "'");
   const specular::Core core;  // the patent's widths and policies
   const specular::Formats& f = core.formats();
   std::ostringstream text;
@@ -81,15 +64,15 @@ int main(int argc, char** argv) {
   specular::energy::RegisterState before = specular::energy::reset_state();
   std::string line;
   int number = 0, index = 0;
-  try {
+  {
     while (std::getline(in, line)) {
       ++number;
       std::istringstream words(line);
       std::vector<std::string> w;
       for (std::string s; words >> s;) w.push_back(s);
       if (w.empty()) continue;
-      const std::string where = std::string(argv[1]) + ":" + std::to_string(number);
-      if (w.size() < 5) throw BadInput{where + ": " + std::to_string(w.size()) + " fields, expected 'cos n r g b' in hex"};
+      const std::string where = stream + ":" + std::to_string(number);
+      if (w.size() < 5) throw BadInput(where + ": " + std::to_string(w.size()) + " fields, expected 'cos n r g b' in hex");
       specular::Operands op;
       op.cos = field(w[0], "cos", 0, 0x10000, where);
       op.n = field(w[1], "n", 1, 1000, where);
@@ -103,23 +86,29 @@ int main(int argc, char** argv) {
       if (model) text << '\t' << synchronous.next(after.in, after.r) << '\t' << drawn.next(after.in, after.r);
       text << '\n';
     }
-  } catch (const BadInput& e) {
-    std::fprintf(stderr, "specular_energy_features: %s\n", e.message.c_str());
-    return 2;
   }
-  if (index == 0) {
-    std::fprintf(stderr, "specular_energy_features: '%s' holds no operation\n", argv[1]);
-    return 2;
-  }
-  if (argc == 3) {
-    std::ofstream out(argv[2]);
+  if (index == 0) throw BadInput("'" + stream + "' holds no operation");
+  if (!out_path.empty()) {
+    std::ofstream out(out_path);
     out << text.str();
-    if (!out) {
-      std::fprintf(stderr, "specular_energy_features: cannot write '%s'\n", argv[2]);
-      return 2;
-    }
+    if (!out) throw BadInput("cannot write '" + out_path + "'");
   } else {
     std::cout << text.str();
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"The energy model's features of each operation of an operand stream, computed by the C++\n"
+               "the model charges with (docs/energy/calibration.md).",
+               "specular_energy_features"};
+  specular::cli::house_rules(app, "Exit status: 0 written, 2 bad input (the line and the value named).");
+  std::string stream, out_path;
+  bool model = false;
+  app.add_option("STREAM", stream, "'cos n r g b' in hex per line")->required();
+  app.add_option("OUT", out_path, "the features' TSV (default: standard output)");
+  app.add_flag("--model", model, "also each operation's pJ by the compiled model, both calibrations");
+  return specular::cli::run(app, argc, argv, [&] { return features(stream, out_path, model); });
 }

@@ -4,24 +4,7 @@
 //   specular_ip_export --source-dir DIR [--version V] [--libdir D]
 //                      [--ipxact FILE] [--systemrdl FILE] [--json FILE]
 //
-//   --ipxact FILE     the IEEE 1685-2014 components, one per Verilog top: FILE (the SystemC
-//                     targets with the drawn device, ip/specular_unit.xml) and beside it
-//                     specular_device_sync.xml and specular_ip_axi.xml
-//   --systemrdl FILE  the SystemRDL 2.0 addrmap (ip/specular_unit.rdl)
-//   --json FILE       the C++ map as plain JSON, for the tests (no writer's code)
-//   --verilog FILE    the register block in Verilog (rtl/ip/specular_reg_block.v)
-//   --bus-dir DIR     the bus and abstraction definitions of the socket's bus type
-//                     (ip/tlm2_generic_payload.busdef.xml, .absdef.xml)
-//   --ipxact-resolved FILE  specular_ip_axi's component with numbers where
-//                     specular_ip_axi.xml has expressions of its parameters, at their
-//                     defaults or at --set's values: for tools that evaluate no IP-XACT
-//                     expression (PeakRDL-ipxact's importer; docs/ipxact.md)
-//   --set N=V[,N=V]   specular_ip_axi's integer parameters for --ipxact-resolved
-//                     (CONFIG_VALUE=0x080D1051,ADDR_WIDTH=16)
-//   --source-dir DIR  the source tree: rtl/device/ holds the Verilog tops
-//   --version V       the component's version (default: the package's)
-//   --libdir D        the install's library folder, relative to the prefix (default lib)
-//
+// --help lists the options (declared in main through run_support/cli.h).
 // FILE "-" is standard output. Exit status: 0 written, 2 bad arguments, an unreadable
 // Verilog file or an unwritable output.
 #include <fstream>
@@ -30,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "ipxact_writer.h"
 #include "map_json.h"
 #include "systemrdl_writer.h"
@@ -41,11 +25,6 @@
 #endif
 
 namespace {
-
-const char* usage =
-    "usage: specular_ip_export --source-dir DIR [--version V] [--libdir D]\n"
-    "                          [--ipxact FILE] [--systemrdl FILE] [--json FILE] [--bus-dir DIR]\n"
-    "                          [--verilog FILE] [--ipxact-resolved FILE [--set N=V[,N=V]]]\n";
 
 /// --set's list: NAME=VALUE pairs, VALUE decimal or 0x hex. Throws std::invalid_argument
 /// naming the bad pair.
@@ -92,38 +71,13 @@ const char* const axi_description =
     "The whole IP in Verilog: an AMBA AXI4-Lite slave with the generated register block "
     "and the synchronous device, done_irq (docs/rtl_ip.md)";
 
-}  // namespace
-
-int main(int argc, char** argv) {
+/// Writes what `options` ask for; the options as the command line gave them.
+int export_ip(std::map<std::string, std::string>& options) {
   using namespace specular::ip_export;
-  std::map<std::string, std::string> options{{"--version", SPECULAR_PACKAGE_VERSION},
-                                             {"--libdir", "lib"}};
-  const std::vector<std::string> known{"--source-dir", "--version", "--libdir",
-                                       "--ipxact",     "--systemrdl", "--json", "--bus-dir",
-                                       "--verilog",    "--ipxact-resolved", "--set"};
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help") {
-      std::cout << usage;
-      return 0;
-    }
-    bool is_known = false;
-    for (const std::string& k : known) is_known = is_known || k == arg;
-    if (!is_known || i + 1 >= argc) {
-      std::cerr << "specular_ip_export: error: "
-                << (is_known ? "'" + arg + "' needs a value" : "unknown option '" + arg + "'")
-                << "; the options are --source-dir, --version, --libdir, --ipxact, --systemrdl, --json, "
-                   "--bus-dir, --verilog, --ipxact-resolved, --set\n"
-                << usage;
-      return 2;
-    }
-    options[arg] = argv[++i];
-  }
   if (!options.count("--ipxact") && !options.count("--systemrdl") && !options.count("--json") &&
       !options.count("--bus-dir") && !options.count("--verilog") && !options.count("--ipxact-resolved")) {
     std::cerr << "specular_ip_export: error: nothing to write: give --ipxact, --systemrdl, --json, "
-                 "--bus-dir, --verilog or --ipxact-resolved\n"
-              << usage;
+                 "--bus-dir, --verilog or --ipxact-resolved\n";
     return 2;
   }
   if (options.count("--set") && !options.count("--ipxact-resolved")) {
@@ -237,4 +191,42 @@ int main(int argc, char** argv) {
     }
   }
   return ok ? 0 : 2;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"The IP's descriptions for SoC tools, written from the register map and the Verilog tops'\n"
+               "headers (docs/ipxact.md). FILE \"-\" is standard output.",
+               "specular_ip_export"};
+  specular::cli::house_rules(app, "Exit status: 0 written, 2 bad arguments, an unreadable Verilog file or an "
+                                  "unwritable output.");
+  app.set_version_flag("");  // --version V is the component's version here
+  std::map<std::string, std::string> options{{"--version", SPECULAR_PACKAGE_VERSION}, {"--libdir", "lib"}};
+  const auto option = [&](const std::string& name, const std::string& type, const std::string& help) {
+    return app
+        .add_option_function<std::string>(
+            name, [&options, name](const std::string& v) { options[name] = v; }, help)
+        ->type_name(type);
+  };
+  option("--ipxact", "FILE",
+         "the IEEE 1685-2014 components, one per Verilog top: FILE (the SystemC targets with the drawn "
+         "device, ip/specular_unit.xml) and beside it specular_device_sync.xml and specular_ip_axi.xml");
+  option("--systemrdl", "FILE", "the SystemRDL 2.0 addrmap (ip/specular_unit.rdl)");
+  option("--json", "FILE", "the C++ map as plain JSON, for the tests (no writer's code)");
+  option("--verilog", "FILE", "the register block in Verilog (rtl/ip/specular_reg_block.v)");
+  option("--bus-dir", "DIR",
+         "the bus and abstraction definitions of the socket's bus type "
+         "(ip/tlm2_generic_payload.busdef.xml, .absdef.xml)");
+  option("--ipxact-resolved", "FILE",
+         "specular_ip_axi's component with numbers where specular_ip_axi.xml has expressions of its "
+         "parameters, at their defaults or at --set's values: for tools that evaluate no IP-XACT "
+         "expression (PeakRDL-ipxact's importer; docs/ipxact.md)");
+  option("--set", "N=V[,N=V]",
+         "specular_ip_axi's integer parameters for --ipxact-resolved (CONFIG_VALUE=0x080D1051,ADDR_WIDTH=16)")
+      ->check(specular::cli::parsed_by(parse_settings));
+  option("--source-dir", "DIR", "the source tree: rtl/device/ holds the Verilog tops");
+  option("--version", "V", "the component's version (default: the package's, " SPECULAR_PACKAGE_VERSION ")");
+  option("--libdir", "D", "the install's library folder, relative to the prefix (default lib)");
+  return specular::cli::run(app, argc, argv, [&] { return export_ip(options); });
 }

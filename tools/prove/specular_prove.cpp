@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "output_file.h"
-#include "parse_values.h"
 #include "partial_set.h"
 #include "progress.h"
 #include "run_models.h"
@@ -103,6 +103,7 @@ struct ProveOptions {
   Shard shard;
   std::string partial_path;
   bool quiet = false;  ///< no progress line even on a terminal
+  std::vector<std::string> merge_files;  ///< --merge FILE...: the partial results to merge
 };
 
 /// Operations checked so far over every device of the run, as the progress line of
@@ -283,29 +284,50 @@ int report(const std::vector<DeviceProof>& proofs, const Json& settings, std::si
   return pass ? 0 : 1;
 }
 
-std::string help() {
-  return "specular_prove: every cos code x every n x every buildable device of a model,\n"
-         "against the bit-accurate core (issue 25).\n\n"
-         "Usage:\n"
-         "  specular_prove --model rtl|rtl-sync|pin|tlm [--device NAME|all] [--shard I/N]\n"
-         "                 [--partial FILE] [--cos-stride K] [--quiet]\n"
-         "  specular_prove --merge FILE...\n\n"
-         "  --model      rtl, rtl-sync: the verilated twins as C++ cycle models, every device\n"
-         "               in one process; pin, tlm: SystemC, one device per process (--device)\n"
-         "  --device     NORMALISATION/SATURATION/CONSTANTS, one of: " + device_names() + "; or all\n"
-         "               (default, rtl and rtl-sync only)\n"
-         "  --shard I/N  the n with (n - 1) mod N = I (tests/support/operation_shard.h's split)\n"
-         "  --partial    write this run's partial result (JSON) for --merge\n"
-         "  --cos-stride every K-th cos code (K in [1, 65536]; default 1 = every code)\n"
-         "  --quiet      no progress line (drawn on standard error only when it is a terminal)\n\n"
-         "Exit status: 0 proved, 1 a difference, 2 bad usage or a refused merge, 3 internal.\n";
+/// Declares the options on `app` (run_support/cli.h), each writing into `o`.
+void add_prove_options(CLI::App& app, ProveOptions& o) {
+  cli::add_parsed(app, "--model", o.model,
+                  [](const std::string& v) {
+                    const Model m = parse_model(v);
+                    if (m == Model::core)
+                      throw UsageError("'core' is the reference itself; one of: rtl, rtl-sync, pin, tlm");
+                    return m;
+                  },
+                  "rtl, rtl-sync: the verilated twins as C++ cycle models, every device in one process; "
+                  "pin, tlm: SystemC, one device per process (--device); required but with --merge")
+      ->type_name("rtl|rtl-sync|pin|tlm");
+  app.add_option("--device", o.device,
+                 "NORMALISATION/SATURATION/CONSTANTS, one of: " + device_names() +
+                     "; or all (default, rtl and rtl-sync only)")
+      ->type_name("NAME|all");
+  cli::add_parsed(app, "--shard", o.shard,
+                  [](const std::string& v) {
+                    const Shard shard = parse_shard(v);
+                    if (shard.count > n_max - n_min + 1)
+                      throw UsageError("N = " + std::to_string(shard.count) +
+                                       " is outside the allowed range [1, 1000] (split by n)");
+                    return shard;
+                  },
+                  "the n with (n - 1) mod N = I (tests/support/operation_shard.h's split)")
+      ->type_name("I/N");
+  app.add_option("--partial", o.partial_path, "write this run's partial result (JSON) for --merge")
+      ->type_name("FILE")
+      ->check(CLI::Validator(
+          [](std::string& v) { return v.empty() ? std::string("the file name is empty") : std::string(); }, ""));
+  app.add_option("--cos-stride", o.cos_stride, "every K-th cos code (default 1 = every code)")
+      ->type_name("K")
+      ->check(cli::integer_in(1, 65536, "K"));
+  app.add_flag("--quiet", o.quiet, "no progress line (drawn on standard error only when it is a terminal)");
+  app.add_option("--merge", o.merge_files,
+                 "turn a complete set of partial results into the unsharded proof's report, refusing a "
+                 "missing, duplicated or mismatched shard (nothing else with it)")
+      ->type_name("FILE")
+      ->expected(1, -1);
 }
 
-int run_prove(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  if (!args.empty() && args.front() == "--merge") {
-    std::vector<std::string> files(args.begin() + 1, args.end());
-    for (const std::string& f : files)
-      if (f.rfind("--", 0) == 0) throw UsageError("--merge: unknown option '" + f + "' (only FILE... follow)");
+int run_prove(const ProveOptions& o, bool model_given, std::ostream& out, std::ostream& err) {
+  if (!o.merge_files.empty()) {
+    const std::vector<std::string>& files = o.merge_files;
     const std::vector<PartialFile> parts = read_complete_set(files, prove_kind);
     std::vector<DeviceProof> total;
     double cpu = 0;
@@ -336,42 +358,6 @@ int run_prove(const std::vector<std::string>& args, std::ostream& out, std::ostr
     return status;
   }
 
-  ProveOptions o;
-  bool model_given = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (a == "--help" || a == "-h") {
-      out << help();
-      return 0;
-    }
-    if (a == "--quiet") {
-      o.quiet = true;
-      continue;
-    }
-    if (a != "--model" && a != "--device" && a != "--shard" && a != "--partial" && a != "--cos-stride")
-      throw UsageError("unknown option '" + a + "' (see --help)");
-    if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value (see --help)");
-    const std::string& v = args[++i];
-    if (a == "--model") {
-      o.model = parse_model(v);
-      if (o.model == Model::core)
-        throw UsageError("--model: 'core' is the reference itself; one of: rtl, rtl-sync, pin, tlm");
-      model_given = true;
-    } else if (a == "--device") {
-      o.device = v;
-    } else if (a == "--shard") {
-      o.shard = parse_shard(v);
-      if (o.shard.count > n_max - n_min + 1)
-        throw UsageError("--shard: N = " + std::to_string(o.shard.count) + " is outside the allowed range [1, 1000] (split by n)");
-    } else if (a == "--partial") {
-      if (v.empty()) throw UsageError("--partial: the file name is empty");
-      o.partial_path = v;
-    } else {
-      const long long k = parse_integer(v, "K", "[1, 65536]");
-      if (k < 1 || k > 65536) throw UsageError("--cos-stride: K = " + v + " is outside the allowed range [1, 65536]");
-      o.cos_stride = k;
-    }
-  }
   if (!model_given) throw UsageError("--model is required: one of rtl, rtl-sync, pin, tlm");
   std::vector<Config> devices;
   for (const Config& c : every_device())
@@ -432,16 +418,29 @@ int run_prove(const std::vector<std::string>& args, std::ostream& out, std::ostr
 }  // namespace specular
 
 int sc_main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
-  try {
-    return specular::tb::run_prove(args, std::cout, std::cerr);
-  } catch (const specular::tb::UsageError& e) {
-    std::cerr << "specular_prove: error: " << e.what() << '\n';
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "specular_prove: internal error: " << e.what() << '\n';
-    return 3;
-  }
+  using namespace specular;
+  CLI::App app{"specular_prove: every cos code x every n x every buildable device of a model, against the\n"
+               "bit-accurate core (issue 25).\n"
+               "  specular_prove --model rtl|rtl-sync|pin|tlm [--device NAME|all] [--shard I/N]\n"
+               "                 [--partial FILE] [--cos-stride K] [--quiet]\n"
+               "  specular_prove --merge FILE...",
+               "specular_prove"};
+  cli::house_rules(app, "Exit status: 0 proved, 1 a difference, 2 bad usage or a refused merge, 3 internal.");
+  tb::ProveOptions options;
+  tb::add_prove_options(app, options);
+  return cli::run(app, argc, argv, [&] {
+    for (const char* other : {"--model", "--device", "--shard", "--partial", "--cos-stride"})
+      if (!options.merge_files.empty() && app.count(other) > 0)
+        throw tb::UsageError(std::string("--merge takes only FILE... (and --quiet), not ") + other);
+    try {
+      return tb::run_prove(options, app.count("--model") > 0, std::cout, std::cerr);
+    } catch (const tb::UsageError&) {
+      throw;  // cli::run: exit 2
+    } catch (const std::exception& e) {
+      std::cerr << "specular_prove: internal error: " << e.what() << '\n';
+      return 3;
+    }
+  });
 }
 
 int main(int argc, char** argv) {

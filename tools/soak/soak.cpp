@@ -13,7 +13,7 @@
 #include <tlm_utils/simple_initiator_socket.h>
 #include <tlm_utils/tlm_quantumkeeper.h>
 
-#include "parse_values.h"
+#include "cli.h"
 #include "progress.h"
 #include "run_models.h"
 #include "scoreboard.h"
@@ -21,7 +21,6 @@
 #include "specular/tlm/driver.h"
 #include "specular/tlm/lt_target.h"
 #include "specular/tlm/pin_target.h"
-#include "usage_error.h"
 
 namespace specular {
 namespace soak {
@@ -30,94 +29,49 @@ using tb::Stimulus;
 
 // ---- options -------------------------------------------------------------------------
 
-namespace {
-std::size_t parse_count(const std::string& option, const std::string& value) {
-  const std::string range = "[0, 1000000000]";
-  try {
-    const long long count = tb::parse_integer(value, option, range);
-    if (count < 0 || count > 1000000000LL)
-      throw std::invalid_argument(option + " = " + value + " is outside the allowed range " + range);
-    return static_cast<std::size_t>(count);
-  } catch (const tb::UsageError& e) {
-    throw std::invalid_argument(e.what());
-  }
-}
-}  // namespace
+const char* const soak_description = "Constrained-random soak of the specular device models.";
 
-SoakOptions parse_soak_options(const std::vector<std::string>& args) {
-  SoakOptions o;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& option = args[i];
-    if (option == "--help" || option == "-h") throw std::invalid_argument("");
-    if (option == "--quiet") {
-      o.quiet = true;
-      continue;
-    }
-    if (i + 1 >= args.size())
-      throw std::invalid_argument("option " + option + " needs a value (see --help)");
-    const std::string& value = args[++i];
-    if (option == "--core") o.core_ops = parse_count(option, value);
-    else if (option == "--pin") o.pin_ops = parse_count(option, value);
-    else if (option == "--tlm") o.tlm_ops = parse_count(option, value);
-    else if (option == "--tlm-pin") o.tlm_pin_ops = parse_count(option, value);
-    else if (option == "--inject-fault") o.inject_fault = parse_count(option, value);
-    else if (option == "--pin-delay") {
-      try {
-        o.pin_delay = pin_delay_from_string(value);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(std::string("--pin-delay: ") + e.what());
-      }
-    }
-    else if (option == "--constants") {
-      try {
-        o.constants = parse_constants(value);
-      } catch (const std::invalid_argument& e) {
-        throw std::invalid_argument(std::string("--constants: ") + e.what());
-      }
-    }
-    else if (option == "--seed") {
-      try {
-        o.seed = tb::parse_unsigned64(value, "--seed");
-      } catch (const tb::UsageError& e) {
-        throw std::invalid_argument(e.what());
-      }
-    } else {
-      throw std::invalid_argument("unknown option '" + option + "' (see --help)");
-    }
-  }
-  return o;
-}
+const char* const soak_footer =
+    "Every result is compared with the double reference (tolerances of reference.h); pin and TLM "
+    "results must equal the core's bit for bit. Each SystemC stage runs in a child process of its "
+    "own. One line per stage: ops, mismatches, time, VmRSS early (after a tenth of the stage) and "
+    "late (at its end). Exit status 0 when no stage has a mismatch, 1 otherwise, 2 for a bad option.";
 
-std::string soak_help() {
-  return R"(specular_soak: constrained-random soak of the specular device models.
-
-Usage: specular_soak [--core N] [--pin N] [--tlm N] [--tlm-pin N] [--pin-delay P] [--seed S]
-                     [--constants C] [--inject-fault K] [--quiet]
-
-  --core N       operations through the bit-accurate core, cycling through every
-                 normalisation and saturation policy (default 10000000)
-  --pin N        operations through the pin-level device, driven on its pins
-                 (default 1000000)
-  --tlm N        operations through the TLM lt target over a bus, with temporal
-                 decoupling (1 us quantum), single and batch transactions (default 1000000)
-  --tlm-pin N    operations through the TLM pin target (transactor) (default 100000)
-  --pin-delay keep|consume
-                 the TLM pin target's delay policy (default keep: the delay the
-                 initiator annotates is returned unchanged; docs/integration.md §6)
-  --seed S       seed of the 64-bit Mersenne Twister (default 1)
-  --constants C  patent|minimax-half|minimax: the device's pins 19 (h), 20 (a) and
-                 ROM 38's scale in every stage, the reference's too (default patent);
-                 the core stage skips the policies the device refuses under them
-  --inject-fault K   corrupt operation K of every stage (self-check of the scoreboard)
-  --quiet        no progress line (drawn on standard error only when it is a
-                 terminal: operations done, total, rate, time left)
-
-Every result is compared with the double reference (tolerances of reference.h);
-pin and TLM results must equal the core's bit for bit. Each SystemC stage runs in a
-child process of its own. One line per stage: ops, mismatches, time, VmRSS early
-(after a tenth of the stage) and late (at its end). Exit status 0 when no stage has
-a mismatch, 1 otherwise, 2 for a bad option.
-)";
+void add_soak_options(CLI::App& app, SoakOptions& o) {
+  const auto count = [&](const std::string& name, std::size_t& target, const std::string& help) {
+    app.add_option(name, target, help)
+        ->type_name("N")
+        ->capture_default_str()
+        ->check(cli::integer_in(0, 1000000000));
+  };
+  count("--core", o.core_ops,
+        "operations through the bit-accurate core, cycling through every normalisation and "
+        "saturation policy");
+  count("--pin", o.pin_ops, "operations through the pin-level device, driven on its pins");
+  count("--tlm", o.tlm_ops,
+        "operations through the TLM lt target over a bus, with temporal decoupling (1 us quantum), "
+        "single and batch transactions");
+  count("--tlm-pin", o.tlm_pin_ops, "operations through the TLM pin target (transactor)");
+  cli::add_parsed(app, "--pin-delay", o.pin_delay, pin_delay_from_string,
+                  "the TLM pin target's delay policy (default keep: the delay the initiator "
+                  "annotates is returned unchanged; docs/integration.md section 6)")
+      ->type_name("keep|consume");
+  app.add_option("--seed", o.seed, "seed of the 64-bit Mersenne Twister")
+      ->type_name("S")
+      ->capture_default_str()
+      ->check(cli::unsigned64());
+  cli::add_parsed(app, "--constants", o.constants, parse_constants,
+                  "the device's pins 19 (h), 20 (a) and ROM 38's scale in every stage, the "
+                  "reference's too (default patent); the core stage skips the policies the device "
+                  "refuses under them")
+      ->type_name("patent|minimax-half|minimax");
+  app.add_option("--inject-fault", o.inject_fault,
+                 "corrupt operation K of every stage (self-check of the scoreboard; 0: none)")
+      ->type_name("K")
+      ->check(cli::integer_in(0, 1000000000));
+  app.add_flag("--quiet", o.quiet,
+               "no progress line (drawn on standard error only when it is a terminal: operations "
+               "done, total, rate, time left)");
 }
 
 // ---- stimuli -------------------------------------------------------------------------

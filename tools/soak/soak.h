@@ -13,6 +13,10 @@
 #include "specular/core.h"
 #include "specular/tlm/pin_target.h"
 
+namespace CLI {
+class App;
+}
+
 namespace specular {
 namespace soak {
 
@@ -33,9 +37,11 @@ struct SoakOptions {
   bool quiet = false;  ///< no progress line (drawn on standard error only on a terminal)
 };
 
-/// Parses argv[1..]; throws std::invalid_argument naming the option and the range.
-SoakOptions parse_soak_options(const std::vector<std::string>& args);
-std::string soak_help();
+/// Declares the options on `app` (run_support/cli.h), each writing into `options`.
+void add_soak_options(CLI::App& app, SoakOptions& options);
+/// What the soak does, for --help: before and after the options.
+extern const char* const soak_description;
+extern const char* const soak_footer;
 
 /// Constrained-random operands: the corners that matter weigh more than a uniform
 /// draw gives them — cos = 0 and 1, the codes just below 1 (pass 1 multiplies their

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "soak.h"
 #include "specular/systemc.h"
 
@@ -46,20 +47,7 @@ bool in_child(const std::function<StageFigures()>& stage) {
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-}  // namespace
-
-int sc_main(int argc, char** argv) {
-  specular::soak::SoakOptions options;
-  try {
-    options = specular::soak::parse_soak_options(std::vector<std::string>(argv + 1, argv + argc));
-  } catch (const std::invalid_argument& e) {
-    if (std::string(e.what()).empty()) {
-      std::cout << specular::soak::soak_help();
-      return 0;
-    }
-    std::cerr << "specular_soak: error: " << e.what() << std::endl;
-    return 2;
-  }
+int soak(const specular::soak::SoakOptions& options) {
   std::cout << "specular_soak: seed " << options.seed << "; core " << options.core_ops << ", pin "
             << options.pin_ops << ", tlm " << options.tlm_ops << ", tlm-pin " << options.tlm_pin_ops
             << " operations; constants " << specular::to_string(options.constants) << std::endl;
@@ -81,6 +69,16 @@ int sc_main(int argc, char** argv) {
     pass = in_child([&] { return specular::soak::run_tlm_stage(options, true); }) && pass;
   std::cout << "specular_soak: " << (pass ? "PASS (no mismatch)" : "FAIL") << std::endl;
   return pass ? 0 : 1;
+}
+
+}  // namespace
+
+int sc_main(int argc, char** argv) {
+  CLI::App app{specular::soak::soak_description, "specular_soak"};
+  specular::cli::house_rules(app, specular::soak::soak_footer);
+  specular::soak::SoakOptions options;
+  specular::soak::add_soak_options(app, options);
+  return specular::cli::run(app, argc, argv, [&] { return soak(options); });
 }
 
 int main(int argc, char** argv) {

@@ -10,89 +10,53 @@
 #include <string>
 #include <vector>
 
+#include "cli.h"
 #include "constants_search.h"
 
 using namespace specular::study;
-
-namespace {
-
-const char* usage =
-    "usage: specular_constants [--out FILE] [--max-f N] [--help]\n"
-    "  Searches the constants a (pin 20), h (pin 19, F fraction bits) and the ROM 38\n"
-    "  scale s that minimise max |s·A - 2^-x| over x >= 0 with the peak exact, for\n"
-    "  h = 1/2 and for every F = 1 .. N. Deterministic; the global optimum of each grid.\n"
-    "  --out FILE  CSV file for the table (default constants_search.csv)\n"
-    "  --max-f N   largest F searched, 1 ... 24 (default 16)\n";
-
-struct Usage : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-long parse_whole(const std::string& option, const std::string& text, long lo, long hi) {
-  char* end = nullptr;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0')
-    throw Usage(option + " '" + text + "' is not a whole number; allowed: " + std::to_string(lo) +
-                " ... " + std::to_string(hi));
-  if (value < lo || value > hi)
-    throw Usage(option + " " + text + " is outside the allowed range [" + std::to_string(lo) +
-                ", " + std::to_string(hi) + "]");
-  return value;
-}
-
-}  // namespace
 
 // See specular_study.cpp: the IP's shared library refers to sc_main.
 extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
+  CLI::App app{"Searches the constants a (pin 20), h (pin 19, F fraction bits) and the ROM 38 scale s\n"
+               "that minimise max |s*A - 2^-x| over x >= 0 with the peak exact, for h = 1/2 and for\n"
+               "every F = 1 .. N. Deterministic; the global optimum of each grid.",
+               "specular_constants"};
+  specular::cli::house_rules(app, "Exit status: 0 done, 1 the search or the CSV file failed, 2 bad usage.");
   std::string out = "constants_search.csv";
   int max_f = 16;
-  try {
-    for (int i = 1; i < argc; ++i) {
-      const std::string arg = argv[i];
-      const auto value = [&]() -> std::string {
-        if (i + 1 >= argc) throw Usage("option " + arg + " needs a value");
-        return argv[++i];
-      };
-      if (arg == "--out") {
-        out = value();
-        if (out.empty()) throw Usage("--out needs a non-empty file name");
-      } else if (arg == "--max-f") {
-        max_f = static_cast<int>(parse_whole("--max-f", value(), 1, 24));
-      } else if (arg == "--help" || arg == "-h") {
-        std::cout << usage;
-        return 0;
-      } else {
-        throw Usage("unknown argument '" + arg + "'");
+  app.add_option("--out", out, "CSV file for the table")
+      ->type_name("FILE")
+      ->capture_default_str()
+      ->check(CLI::Validator([](std::string& v) { return v.empty() ? "the file name is empty" : ""; }, ""));
+  app.add_option("--max-f", max_f, "largest F searched")
+      ->type_name("N")
+      ->capture_default_str()
+      ->check(specular::cli::integer_in(1, 24));
+  return specular::cli::run(app, argc, argv, [&] {
+    try {
+      const ConstantsTable table = constants_table(max_f);
+      write_constants_csv(table, out);
+      const int chosen = table.chosen_f;
+      const double best = table.best;
+      const auto& rows = table.rows;
+      std::printf("search        F  mul6+  h (code/2^F)          a (code/2^22)            s            max error   boxes\n");
+      for (const auto& [name, r] : rows) {
+        std::printf("%-12s %2d  %4d   %6lld = %-11.9f  %8lld = %-12.9f  %-11.9f  %.9f  %ld%s\n",
+                    name.c_str(), r.h_frac_bits, r.h_frac_bits - 1, static_cast<long long>(r.h_code),
+                    r.h, static_cast<long long>(r.a_code), r.a, r.s, r.error.worst(), r.boxes,
+                    name == "minimax" && r.h_frac_bits == chosen ? "  <- chosen" : "");
       }
+      std::printf("best over F <= %d: %.9f; chosen F = %d (fewest bits within 1 %%)\n", max_f, best, chosen);
+      // The domain's edge (docs/study.md): no point below it can beat the patent's 0.125.
+      std::printf("domain: 0 < h <= %.3f, h/ln2 <= a < 2^%d; below h/ln2 every error is > 2^-e = %.6f\n",
+                  search_h_max, search_a_int_bits, std::exp2(-std::exp(1.0)));
+      std::printf("table written to %s\n", out.c_str());
+    } catch (const std::exception& e) {
+      std::cerr << "specular_constants: " << e.what() << "\n";
+      return 1;
     }
-  } catch (const Usage& e) {
-    std::cerr << "specular_constants: " << e.what() << "\n" << usage;
-    return 2;
-  }
-
-  try {
-    const ConstantsTable table = constants_table(max_f);
-    write_constants_csv(table, out);
-    const int chosen = table.chosen_f;
-    const double best = table.best;
-    const auto& rows = table.rows;
-    std::printf("search        F  mul6+  h (code/2^F)          a (code/2^22)            s            max error   boxes\n");
-    for (const auto& [name, r] : rows) {
-      std::printf("%-12s %2d  %4d   %6lld = %-11.9f  %8lld = %-12.9f  %-11.9f  %.9f  %ld%s\n",
-                  name.c_str(), r.h_frac_bits, r.h_frac_bits - 1, static_cast<long long>(r.h_code),
-                  r.h, static_cast<long long>(r.a_code), r.a, r.s, r.error.worst(), r.boxes,
-                  name == "minimax" && r.h_frac_bits == chosen ? "  <- chosen" : "");
-    }
-    std::printf("best over F <= %d: %.9f; chosen F = %d (fewest bits within 1 %%)\n", max_f, best, chosen);
-    // The domain's edge (docs/study.md): no point below it can beat the patent's 0.125.
-    std::printf("domain: 0 < h <= %.3f, h/ln2 <= a < 2^%d; below h/ln2 every error is > 2^-e = %.6f\n",
-                search_h_max, search_a_int_bits, std::exp2(-std::exp(1.0)));
-    std::printf("table written to %s\n", out.c_str());
-  } catch (const std::exception& e) {
-    std::cerr << "specular_constants: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

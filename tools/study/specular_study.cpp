@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 
+#include "cli.h"
 #include "constants_search.h"
 #include "csv.h"
 #include "energy_study.h"
@@ -229,20 +230,10 @@ int merge(const StudyOptions& options) {
 // exports libstdc++ code the instrumented objects use) and binds sc_main at load time.
 extern "C" int sc_main(int, char**) { return 0; }
 
-int main(int argc, char** argv) {
-  StudyOptions options;
-  tb::Shard shard;
-  try {
-    options = parse_study_options(argc, argv);
-    shard = tb::parse_shard(options.shard);
-  } catch (const std::exception& e) {
-    std::cerr << "specular_study: " << e.what() << "\n" << study_usage();
-    return 2;
-  }
-  if (options.help) {
-    std::cout << study_usage();
-    return 0;
-  }
+namespace {
+
+int run_study(const StudyOptions& options) {
+  const tb::Shard shard = tb::parse_shard(options.shard);
   if (!options.merge_files.empty()) {
     try {
       return merge(options);
@@ -318,4 +309,18 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Measures the device's approximation of cos^n, its energy integrals and its fixed-point\n"
+               "widths, and writes CSV files for scripts/plot_study.py.\n"
+               "  specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--shard I/N] [--partial FILE]\n"
+               "  specular_study --merge PARTIAL... [--out DIR]",
+               "specular_study"};
+  cli::house_rules(app, "Exit status: 0 done, 1 a stage failed or a file could not be written, 2 bad usage "
+                        "or a refused merge.");
+  StudyOptions options;
+  add_study_options(app, options);
+  return cli::run(app, argc, argv, [&] { return run_study(options); });
 }

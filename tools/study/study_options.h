@@ -1,24 +1,21 @@
 // Command line of specular_study, and the sampling each stage uses (full or quick).
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+namespace CLI {
+class App;
+}
+
 namespace specular {
 namespace study {
-
-/// A bad command line; main() prints the message and the usage and exits with 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct StudyOptions {
   std::string out_dir = "study-output";  ///< where the CSV files go
   bool quick = false;                    ///< a few n and coarse grids: seconds, for tests
   unsigned workers = 2;                  ///< worker threads
   bool quiet = false;                    ///< no progress line (it is drawn only on a terminal)
-  bool help = false;
   std::string shard = "0/1";               ///< --shard I/N: the stages s with s mod N = I
   std::string partial;                     ///< --partial FILE: this run's partial result
   std::vector<std::string> merge_files;    ///< --merge FILE...: merge these partials
@@ -30,11 +27,8 @@ struct StudyOptions {
   static std::vector<unsigned> sphere_n_values();  ///< 1, 10, 100, 1000
 };
 
-/// Parses argv; throws UsageError naming the bad argument and what is allowed.
-StudyOptions parse_study_options(int argc, const char* const* argv);
-
-/// The usage text (--help).
-std::string study_usage();
+/// Declares the options on `app` (run_support/cli.h), each writing into `options`.
+void add_study_options(CLI::App& app, StudyOptions& options);
 
 }  // namespace study
 }  // namespace specular

@@ -9,6 +9,7 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "cli.h"
 #include "output_file.h"
 #include "parse_values.h"
 #include "partial_set.h"
@@ -206,17 +207,17 @@ VariantError merge_variant_error(const std::vector<std::string>& files) {
 
 namespace {
 
-std::string help_text() {
-  return R"(specular_variant_error: a design variant's exhaustive error (issue 26, docs/design_space.md)
+const char* const description = R"(specular_variant_error: a design variant's exhaustive error (issue 26, docs/design_space.md)
 
-Usage:
+The runs:
   specular_variant_error NAME [--json FILE] [--n FIRST:LAST] [--shard I/N --partial FILE]
   specular_variant_error --merge FILE... [--json FILE]
   specular_variant_error --all [--json FILE] [--n FIRST:LAST]
                                          every registered variant in turn (JSON: an array)
   specular_variant_error --list          the registered variants' names, one a line
+)";
 
-Runs variant NAME's C++ model on every cos code 0..65536 (U1.16) x every n in FIRST..LAST
+const char* const footer = R"(Runs variant NAME's C++ model on every cos code 0..65536 (U1.16) x every n in FIRST..LAST
 (default 1:1000) at the default configuration and R = G = B = 255, and reports max and
 mean |lobe - K(n)*cos^n| (multiplier 39's S10.20) and |pin - K(n)*cos^n*255| (pins 24-26,
 S18.13, every channel), each max with its (cos code, n), the operation count and wall
@@ -225,9 +226,7 @@ reference of the variants that compute it, the others' distance from it). --shar
 result to --partial FILE (without --shard: the whole run's, shard 0/1); --merge adds a complete set of them up into the unsharded run's
 figures, bit for bit (seconds: the shards' sum).
 
-Exit status: 0 done; 2 bad option, name or partial set; 3 internal error.
-)";
-}
+Exit status: 0 done; 2 bad option, name or partial set; 3 internal error.)";
 
 void print_measure(std::ostream& out, const char* label, const ErrorMeasure& m) {
   out << "  " << std::left << std::setw(30) << label << std::right << " max " << std::setprecision(6)
@@ -276,31 +275,64 @@ std::string variant_list() {
   return list;
 }
 
-int run(const std::vector<std::string>& args, std::ostream& out) {
-  if (args.empty()) throw UsageError("give a variant's NAME (one of: " + variant_list() + "), --merge FILE... or --list");
-  if (args.front() == "--help" || args.front() == "-h") {
-    out << help_text();
-    return 0;
-  }
-  if (args.front() == "--list") {
-    if (args.size() > 1) throw UsageError("--list takes nothing else");
+/// The command line, declared (run_support/cli.h).
+struct VariantErrorOptions {
+  std::string name, json_path, partial_path;
+  bool list = false, all = false;
+  std::vector<std::string> merge_files;
+  ErrorSweepRange n_range;
+  Shard shard;
+};
+
+void add_options(CLI::App& app, VariantErrorOptions& o) {
+  app.add_option("NAME", o.name, "the variant, one of: " + variant_list());
+  app.add_flag("--list", o.list, "the registered variants' names, one a line (nothing else with it)");
+  app.add_flag("--all", o.all, "every registered variant in turn (JSON: an array); with --json and --n only");
+  app.add_option("--merge", o.merge_files, "add a complete set of partial results up (with --json only)")
+      ->type_name("FILE")
+      ->expected(1, -1);
+  app.add_option("--json", o.json_path, "write the figures as JSON there")
+      ->type_name("FILE")
+      ->check(cli::parsed_by([](const std::string& v) {
+        if (v.empty()) throw UsageError("the file name is empty");
+      }));
+  cli::add_parsed(app, "--n", o.n_range, parse_n_range, "the n measured, 1 <= FIRST <= LAST <= 1000 (default 1:1000)")
+      ->type_name("FIRST:LAST");
+  cli::add_parsed(app, "--shard", o.shard, parse_shard, "the n with (n - 1) mod N == I; needs --partial")
+      ->type_name("I/N");
+  app.add_option("--partial", o.partial_path, "write this run's partial result (without --shard: the whole run's)")
+      ->type_name("FILE")
+      ->check(cli::parsed_by([](const std::string& v) {
+        if (v.empty()) throw UsageError("the file name is empty");
+      }));
+}
+
+int run(const CLI::App& app, const VariantErrorOptions& o, std::ostream& out) {
+  const auto only = [&](const std::string& mode, const std::vector<std::string>& allowed) {
+    for (const CLI::Option* opt : app.get_options()) {
+      const std::string name = opt->get_name();
+      if (opt->count() == 0 || name == mode || name == "--help" || name == "--version") continue;
+      if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
+        throw UsageError(mode + ": " + name + " does not apply" +
+                         (allowed.empty() ? std::string(" (nothing else with it)") : " (allowed: " + [&] {
+                           std::string list;
+                           for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+                           return list;
+                         }() + ")"));
+    }
+  };
+  if (o.list) {
+    only("--list", {});
     for (const std::string& name : variants::variant_names()) out << name << '\n';
     return 0;
   }
-  if (args.front() == "--all") {  // every registered variant, one after the other
-    std::string json_path;
-    ErrorSweepRange range;
-    for (std::size_t i = 1; i < args.size(); ++i) {
-      if (i + 1 >= args.size()) throw UsageError("--all: option " + args[i] + " needs a value (allowed: --json FILE, --n FIRST:LAST)");
-      if (args[i] == "--json") json_path = args[++i];
-      else if (args[i] == "--n") range = parse_n_range(args[++i]);
-      else throw UsageError("--all: unknown option '" + args[i] + "' (allowed: --json FILE, --n FIRST:LAST)");
-    }
+  if (o.all) {  // every registered variant, one after the other
+    only("--all", {"--json", "--n"});
     std::optional<AtomicOutputStream> file;
-    if (!json_path.empty()) file.emplace(json_path, "--json");
+    if (!o.json_path.empty()) file.emplace(o.json_path, "--json");
     Json all = Json::array();
     for (const std::string& name : variants::variant_names()) {
-      const VariantError e = measure_variant_error(name, range);
+      const VariantError e = measure_variant_error(name, o.n_range);
       print_text(out, e);
       all.push_back(variant_error_json(e));
     }
@@ -310,47 +342,22 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
     }
     return 0;
   }
-  const bool merge = args.front() == "--merge";
-  std::string json_path, partial_path, name;
-  std::vector<std::string> files;
-  ErrorSweepRange range;
-  bool shard_given = false;
-  for (std::size_t i = merge ? 1 : 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
-      return args[++i];
-    };
-    if (a == "--json") {
-      json_path = value();
-      if (json_path.empty()) throw UsageError("--json: the file name is empty");
-    } else if (!merge && a == "--partial") {
-      partial_path = value();
-      if (partial_path.empty()) throw UsageError("--partial: the file name is empty");
-    } else if (!merge && a == "--shard") {
-      range.shard = parse_shard(value());
-      shard_given = true;
-    } else if (!merge && a == "--n") {
-      const Shard shard = range.shard;
-      range = parse_n_range(value());
-      range.shard = shard;
-    } else if (a.rfind("--", 0) == 0) {
-      throw UsageError("unknown option '" + a + "'" +
-                       (merge ? " after --merge (allowed: --json FILE)" : " (see --help)"));
-    } else if (merge) {
-      files.push_back(a);
-    } else if (name.empty()) {
-      name = a;
-    } else {
-      throw UsageError("one variant a run: '" + name + "' and '" + a + "'");
-    }
-  }
+  const bool merge = !o.merge_files.empty();
+  if (merge) only("--merge", {"--json"});
+  const std::string& name = o.name;
+  const std::string& json_path = o.json_path;
+  const std::string& partial_path = o.partial_path;
+  const std::vector<std::string>& files = o.merge_files;
+  const bool shard_given = app.count("--shard") > 0;
+  ErrorSweepRange range = o.n_range;
+  range.shard = o.shard;
   VariantError e;
   if (merge) {
     e = merge_variant_error(files);
   } else {
     const auto names = variants::variant_names();
-    if (name.empty()) throw UsageError("give a variant's NAME (one of: " + variant_list() + ")");
+    if (name.empty())
+      throw UsageError("give a variant's NAME (one of: " + variant_list() + "), --merge FILE... or --list");
     if (std::find(names.begin(), names.end(), name) == names.end())
       throw UsageError("unknown variant '" + name + "' (known: " + variant_list() + ")");
     if (shard_given && partial_path.empty())
@@ -374,15 +381,23 @@ int run(const std::vector<std::string>& args, std::ostream& out) {
 }  // namespace
 
 int run_variant_error(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  try {
-    return run(args, out);
-  } catch (const UsageError& e) {
-    err << "specular_variant_error: error: " << e.what() << "\n(specular_variant_error --help lists the options)\n";
-    return 2;
-  } catch (const std::exception& e) {
-    err << "specular_variant_error: internal error: " << e.what() << '\n';
-    return 3;
-  }
+  CLI::App app{description, "specular_variant_error"};
+  cli::house_rules(app, footer);
+  VariantErrorOptions options;
+  add_options(app, options);
+  return cli::run(
+      app, args,
+      [&] {
+        try {
+          return run(app, options, out);
+        } catch (const UsageError&) {
+          throw;  // cli::run: exit 2
+        } catch (const std::exception& e) {
+          err << "specular_variant_error: internal error: " << e.what() << '\n';
+          return 3;
+        }
+      },
+      out, err);
 }
 
 }  // namespace tb

@@ -32,6 +32,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "cli.h"
+
 namespace {
 
 struct Target {
@@ -72,16 +74,11 @@ bool binary(char v) { return v == '0' || v == '1'; }
 
 enum class ResultMode { none, rise, fall, clk_valid };  // how a result shows (the map's strobe line)
 
-}  // namespace
-
-int main(int argc, char** argv) {
-    if (argc != 4) {
-        std::cerr << "usage: specular_vcd_activity MAP VCD OUT\n";
-        return 2;
-    }
+/// The counts of `vcd_path` by the rules of `map_path`, written to `out_path`.
+int count_activity(const std::string& map_path, const std::string& vcd_path, const std::string& out_path) {
     // ---- the map ------------------------------------------------------------------
-    std::ifstream map_in(argv[1]);
-    if (!map_in) fail(std::string("cannot read the map '") + argv[1] + "'");
+    std::ifstream map_in(map_path);
+    if (!map_in) fail(std::string("cannot read the map '") + map_path + "'");
     int net_count = -1;
     std::vector<double> rise_pj, fall_pj;
     std::unordered_map<std::string, int> wanted;  // scope + '\t' + bit -> net
@@ -93,7 +90,7 @@ int main(int argc, char** argv) {
     std::string line;
     for (int number = 1; std::getline(map_in, line); ++number) {
         const auto f = split(line, '\t');
-        const auto where = std::string(argv[1]) + ":" + std::to_string(number);
+        const auto where = std::string(map_path) + ":" + std::to_string(number);
         auto net_of = [&](const std::string& text) {
             const int net = std::atoi(text.c_str());
             if (net < 0 || net >= net_count) fail(where + ": net '" + text + "' is not in 0.." + std::to_string(net_count - 1));
@@ -132,11 +129,11 @@ int main(int argc, char** argv) {
             fail(where + ": '" + line + "' is no map line");
         }
     }
-    if (net_count < 0) fail(std::string("the map '") + argv[1] + "' names no nets");
+    if (net_count < 0) fail(std::string("the map '") + map_path + "' names no nets");
 
     // ---- the VCD's header: which identifier carries which nets ----------------------
-    std::ifstream vcd(argv[2]);
-    if (!vcd) fail(std::string("cannot read the VCD '") + argv[2] + "'");
+    std::ifstream vcd(vcd_path);
+    if (!vcd) fail(std::string("cannot read the VCD '") + vcd_path + "'");
     std::unordered_map<std::string, int> id_index;  // VCD identifier -> slot
     std::vector<std::vector<Target>> targets;
     std::vector<std::size_t> widths;
@@ -200,7 +197,7 @@ int main(int argc, char** argv) {
             break;
         }
     }
-    if (!definitions_ended) fail(std::string("'") + argv[2] + "' has no $enddefinitions: not a VCD");
+    if (!definitions_ended) fail(std::string("'") + vcd_path + "' has no $enddefinitions: not a VCD");
 
     // ---- the value changes, one time step at a time ---------------------------------
     std::vector<char> value(net_count, 'x');
@@ -310,12 +307,26 @@ int main(int argc, char** argv) {
     if (mode == ResultMode::clk_valid && strobe_value == '1' && t_ps >= begin_ps) checkpoints.emplace_back(t_ps, ++results, energy);
 
     // ---- the counts -------------------------------------------------------------------
-    FILE* out = std::fopen(argv[3], "w");
-    if (!out) fail(std::string("cannot write '") + argv[3] + "'");
+    FILE* out = std::fopen(out_path.c_str(), "w");
+    if (!out) fail(std::string("cannot write '") + out_path + "'");
     for (int net = 0; net < net_count; ++net)
         if (rises[net] || falls[net]) std::fprintf(out, "toggles\t%d\t%lld\t%lld\n", net, rises[net], falls[net]);
     for (const auto& g : groups) std::fprintf(out, "reads\t%s\t%lld\n", g.name.c_str(), g.reads);
     for (const auto& [t, r, e] : checkpoints) std::fprintf(out, "checkpoint\t%.17g\t%lld\t%.17g\n", t, r, e);
     std::fprintf(out, "end\t%.17g\t%.17g\n", t_ps, timescale_ps);
     return std::fclose(out) == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"The toggle counter of scripts/silicon/energy.py for large VCDs (docs/energy.md).",
+                 "specular_vcd_activity"};
+    specular::cli::house_rules(app, "Exit status: 0 written, 1 a file unreadable or malformed (named with "
+                                    "the line), 2 usage.");
+    std::string map_path, vcd_path, out_path;
+    app.add_option("MAP", map_path, "the map energy.py compute writes")->required();
+    app.add_option("VCD", vcd_path, "the gate-level replay's VCD")->required();
+    app.add_option("OUT", out_path, "the counts, tab-separated")->required();
+    return specular::cli::run(app, argc, argv, [&] { return count_activity(map_path, vcd_path, out_path); });
 }

@@ -80,13 +80,14 @@ class SpecularTarget : public sc_core::sc_module {
   /// current time: the operations (charged with energy_calibration()'s gate-level fit),
   /// the register reads and writes, and every clock period since time 0 (the IP has no
   /// clock gating). All zero while the model is off (the default: set_energy_model).
-  energy::EnergyTally energy() const;
+  /// (Its types are named in full here: inside this class, `energy` is this function.)
+  specular::energy::EnergyTally energy() const;
   /// The same at time `at` (e.g. an access's annotated time, sc_time_stamp() + delay):
   /// the clocks to `at`, the work charged so far.
-  energy::EnergyTally energy(const sc_core::sc_time& at) const;
+  specular::energy::EnergyTally energy(const sc_core::sc_time& at) const;
   /// Whose gate-level figures the operations are charged: the drawn device for `pin`
   /// and `rtl`, the synchronous device (the IP's datapath) for the others.
-  energy::Calibration energy_calibration() const { return calibration_; }
+  specular::energy::Calibration energy_calibration() const { return calibration_; }
   /// Switches the energy model on or off (off by default: it costs lt several times its
   /// own time per operation, docs/energy.md; off, an access costs one test more than
   /// without it). Switching off forgets what was counted; switch on before the first
@@ -127,11 +128,11 @@ class SpecularTarget : public sc_core::sc_module {
   /// implementation whose execute() charges each operation itself (the results at
   /// hand: `lt`) says so with charges_operations_itself(); otherwise run() charges them,
   /// recomputed by the meter's own Core (pin, rtl, rtl_sync: bit-identical results).
-  energy::EnergyMeter* energy_meter() { return meter_.get(); }
+  specular::energy::EnergyMeter* energy_meter() { return meter_.get(); }
   /// See energy_meter().
   void charges_operations_itself() { charges_itself_ = true; }
   /// The calibration charged (the constructor's default: the synchronous device).
-  void set_energy_calibration(energy::Calibration calibration);
+  void set_energy_calibration(specular::energy::Calibration calibration);
 
   /// Runs `count` operations: cos λ from `cos[i]`, n and R, G, B from `shared`.
   /// Writes pins 24–26 of operation i to out[3i..3i+2] (32-bit two's complement) and

@@ -237,8 +237,8 @@ class SpecularTarget : public sc_core::sc_module {
   void sample_power();  // the power trace's process
   double charged_pj() const;  // operations, reads and writes so far (no clocks)
 
-  energy::Calibration calibration_ = energy::Calibration::synchronous_device;
-  std::unique_ptr<energy::EnergyMeter> meter_;
+  specular::energy::Calibration calibration_ = specular::energy::Calibration::synchronous_device;
+  std::unique_ptr<specular::energy::EnergyMeter> meter_;
   bool charges_itself_ = false;
   sc_core::sc_time power_window_ = sc_core::SC_ZERO_TIME;  ///< zero: no power trace
   std::deque<double> power_bins_;  ///< pJ of windows from the current one on

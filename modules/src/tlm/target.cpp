@@ -511,8 +511,7 @@ void SpecularTarget::trace_power(const sc_time& window) {
     throw std::invalid_argument("TLM target: the power trace is already on (window " +
                                 power_window_.to_string() + ")");
   power_window_ = window;
-  set_energy_model(true);  // a power trace needs the energy
-  binned_pj_ = charged_pj();
+  set_energy_model(true);  // a power trace needs the energy (and starts its binning there)
   power_on_.notify(sc_core::SC_ZERO_TIME);
 }
 

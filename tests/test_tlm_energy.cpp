@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+#include "specular/energy/operation_features.h"
 #include "specular/tlm/energy_counter.h"
 #include "support/tlm_bench.h"
 
@@ -276,3 +277,26 @@ TEST(TlmEnergy, OffCountsNothing) {
 }
 
 }  // namespace
+
+// The stream keeps each operation's derived values for the next one (its "previous"
+// step): over a stream, in turn and after a restart, its features must be those of
+// operation_features() on the same two register states, computed from nothing.
+TEST(EnergyFeatureStream, KeepsThePreviousOperationsValuesExactly) {
+  const Core core;
+  energy::FeatureStream stream(core.formats());
+  energy::RegisterState before = energy::reset_state();
+  std::size_t compared = 0;
+  for (const Operands& op : random_operands(2000, 7)) {
+    const energy::RegisterState after{op, core.run(op)};
+    const energy::Features expected = energy::operation_features(core.formats(), before, after);
+    const energy::Features got = stream.next(after.in, after.r);
+    for (std::size_t i = 0; i < energy::feature_count; ++i)
+      ASSERT_EQ(got[i], expected[i]) << energy::feature_names[i] << " at operation " << compared;
+    before = after;
+    if (++compared % 500 == 0) {  // a reset in the middle of the stream
+      stream.restart_from(energy::reset_state());
+      before = energy::reset_state();
+    }
+  }
+  EXPECT_EQ(compared, 2000u);
+}

@@ -9,17 +9,17 @@ namespace {
 bool same(const FixedFormat& a, const FixedFormat& b) {
   return a.is_signed == b.is_signed && a.int_bits == b.int_bits && a.frac_bits == b.frac_bits;
 }
+}  // namespace
 
-/// Every constant the core's hot path reads from DefaultFormats, compared with the
-/// run-time formats: only then may run() use the constants.
-bool is_default(const Formats& f) {
+// Every constant the core's hot path reads from DefaultFormats, compared with the
+// run-time formats: only then may run() use the constants.
+bool has_default_formats(const Formats& f) {
   using D = DefaultFormats;
   return same(f.cos, D::cos) && same(f.n, D::n) && same(f.rgb, D::rgb) && same(f.mux4, D::mux4) &&
          same(f.log2, D::log2) && same(f.reg9, D::reg9) && same(f.rom38, D::rom38) &&
          same(f.norm, D::norm) && same(f.out, D::out) &&
          f.widths.rom5_addr_bits == D::widths.rom5_addr_bits;
 }
-}  // namespace
 
 Core::Core(const Config& config)
     : config_(config),
@@ -31,7 +31,7 @@ Core::Core(const Config& config)
       pin20_(pin20_code(formats_, config.constants)),
       rom5_(formats_),
       rom38_(formats_, config),
-      default_formats_(is_default(formats_)) {}
+      default_formats_(has_default_formats(formats_)) {}
 
 void Core::refuse(const Operands& in) const {
   const auto check = [](code_t code, const FixedFormat& format, const char* what) {

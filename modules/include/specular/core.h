@@ -67,6 +67,10 @@ struct DefaultFormats {
   static constexpr FixedFormat out{true, 18, 13};    ///< Formats::out: S18.13
 };
 
+/// True when `formats` are DefaultFormats' (every constant the hot paths read from it):
+/// only then may a caller run the arithmetic on DefaultFormats{} instead of `formats`.
+bool has_default_formats(const Formats& formats);
+
 /// The device as a plain C++ object: bit-accurate, no clock, no SystemC.
 ///
 /// The datapath of Fig. 1 computed as the netlist computes it, to the bit, without the

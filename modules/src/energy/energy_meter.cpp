@@ -5,7 +5,7 @@
 namespace specular::energy {
 
 EnergyMeter::EnergyMeter(Calibration calibration, const Formats& formats)
-    : calibration_(calibration), formats_(formats) {}
+    : calibration_(calibration), features_(formats) {}
 EnergyMeter::~EnergyMeter() = default;
 EnergyMeter::EnergyMeter(EnergyMeter&&) noexcept = default;
 EnergyMeter& EnergyMeter::operator=(EnergyMeter&&) noexcept = default;

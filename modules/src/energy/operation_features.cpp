@@ -3,6 +3,9 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <mutex>
+#include <utility>
+#include <vector>
 
 #include "specular/constants.h"
 
@@ -40,29 +43,36 @@ const std::array<const char*, feature_count> feature_names = {
 
 namespace {
 
-// The helpers are inlined into operation_features, so that its POPCNT clone uses the
+// The helpers are inlined into the stream's step, so that its POPCNT clone uses the
 // instruction for them too.
 #define SPECULAR_ENERGY_INLINE inline __attribute__((always_inline))
 
+// The features are counted in integers (activities in eighths) and turned into doubles
+// once per operation: the same values, in half the instructions of counting in doubles.
+
 /// Bits that differ between two codes on a bus of `width` bits.
-SPECULAR_ENERGY_INLINE double toggles(code_t a, code_t b, int width) {
+SPECULAR_ENERGY_INLINE int toggles(code_t a, code_t b, int width) {
   const std::uint64_t mask = width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << width) - 1;
-  return static_cast<double>(__builtin_popcountll((static_cast<std::uint64_t>(a) ^ static_cast<std::uint64_t>(b)) & mask));
+  return __builtin_popcountll((static_cast<std::uint64_t>(a) ^ static_cast<std::uint64_t>(b)) & mask);
 }
 
 /// Ones of a code on a bus of `width` bits.
-SPECULAR_ENERGY_INLINE double ones(code_t a, int width) { return toggles(a, 0, width); }
+SPECULAR_ENERGY_INLINE int ones(code_t a, int width) { return toggles(a, 0, width); }
 
-/// An array multiplier's activity from operands (a0, b0) to (a1, b1): each operand's
-/// toggles times the ones of the other (the partial products that change), / 8.
-SPECULAR_ENERGY_INLINE double activity(code_t a0, code_t b0, code_t a1, code_t b1, int wa, int wb) {
-  return (toggles(a0, a1, wa) * ones(b1, wb) + toggles(b0, b1, wb) * ones(a1, wa)) / 8.0;
+/// An array multiplier's activity from operands (a0, b0) to (a1, b1), in eighths: each
+/// operand's toggles times the ones of the other (the partial products that change).
+SPECULAR_ENERGY_INLINE int activity8(code_t a0, code_t b0, code_t a1, code_t b1, int wa, int wb) {
+  return toggles(a0, a1, wa) * ones(b1, wb) + toggles(b0, b1, wb) * ones(a1, wa);
 }
+
+/// Eighths as the feature's value.
+SPECULAR_ENERGY_INLINE double eighths(int count) { return count / 8.0; }
 
 /// ROM 5's address for a multiplexer-3 code: the exponent (the leading one's place)
 /// and the mantissa bits after it, as Rom5Table::lookup forms them; a code ≤ 0 reads
 /// the table's zero entry.
-SPECULAR_ENERGY_INLINE code_t rom5_address(const Formats& f, code_t bus) {
+template <class FormatSet>
+SPECULAR_ENERGY_INLINE code_t rom5_address(const FormatSet& f, code_t bus) {
   if (bus <= 0) return 0;
   const int bits = f.widths.rom5_addr_bits;
   const arith::LeadingOne one = arith::leading_one(static_cast<std::uint64_t>(bus), 64);
@@ -70,50 +80,71 @@ SPECULAR_ENERGY_INLINE code_t rom5_address(const Formats& f, code_t bus) {
   return static_cast<code_t>((static_cast<std::uint64_t>(one.msb) << bits) | mantissa);
 }
 
-/// ROM 5's table for `f` (built once per thread and widths: the default widths in practice).
-const arith::Rom5Table& rom5_for(const Formats& f) {
-  thread_local Widths widths{};
-  thread_local std::unique_ptr<arith::Rom5Table> table;
-  if (!table || std::memcmp(&widths, &f.widths, sizeof(Widths)) != 0) {
-    table = std::make_unique<arith::Rom5Table>(f);
-    widths = f.widths;
-  }
-  return *table;
-}
-
-/// Pass 2 written (register 9 from pass 1 to pass 2, select 36 high): ROM 5's read, the
-/// log2 unit's and multiplier 6's (on h) toggles, multipliers 13-15's activity as
-/// multiplier 39 settles on the result.
-struct End {
-  double rom5_read, log2, mul6, mul39_activity, mul_rgb_activity;
-};
-SPECULAR_ENERGY_INLINE End end_of(const Formats& f, const arith::Rom5Table& rom5, code_t h,
-                                  const Operands& in, const Result& r) {
-  const code_t log1 = rom5.log2(r.reg9_pass1), log2 = rom5.log2(r.reg9_pass2);
-  const code_t mul39_pass1 = arith::mul39(f, r.reg9_pass1, r.rom38_k);
-  double rgb_activity = 0;
-  for (int ch = 0; ch < 3; ++ch)
-    rgb_activity += activity(mul39_pass1, in.rgb[ch], r.norm39, in.rgb[ch], f.norm.width(), f.rgb.width());
-  return {rom5_address(f, r.reg9_pass1) != rom5_address(f, r.reg9_pass2) ? 1.0 : 0.0,
-          toggles(log1, log2, f.log2.width()),
-          toggles(arith::mul6(f, log1, h), arith::mul6(f, log2, h), f.reg9.width()),
-          activity(r.reg9_pass1, r.rom38_k, r.reg9_pass2, r.rom38_k, f.reg9.width(), f.rom38.width()),
-          rgb_activity};
-}
-
-/// Fig. 2's select 36 falls after pass 2 is written: ROM 5's bus from register 9's pass 2
-/// back to register 1's cos, multiplier 6's second operand from h back to n.
-struct Return {
-  double rom5_read, mul6_activity;
-};
-SPECULAR_ENERGY_INLINE Return return_of(const Formats& f, const arith::Rom5Table& rom5, code_t h,
-                                        const Operands& in, const Result& r) {
-  const code_t bus = arith::mux3(f, false, in.cos, 0), n = arith::mux4(f, false, in.n, h);
-  return {rom5_address(f, r.reg9_pass2) != rom5_address(f, bus) ? 1.0 : 0.0,
-          activity(rom5.log2(r.reg9_pass2), h, rom5.log2(bus), n, f.log2.width(), f.mux4.width())};
+/// ROM 5's table for `f`, one per widths for the whole process (the default widths in
+/// practice): streams share it, so that its words stay in the cache once.
+const arith::Rom5Table& shared_rom5(const Formats& f) {
+  static std::mutex mutex;
+  static std::vector<std::pair<Widths, std::unique_ptr<arith::Rom5Table>>> tables;
+  const std::lock_guard<std::mutex> lock(mutex);
+  for (const auto& [widths, table] : tables)
+    if (std::memcmp(&widths, &f.widths, sizeof(Widths)) == 0) return *table;
+  tables.emplace_back(f.widths, std::make_unique<arith::Rom5Table>(f));
+  return *tables.back().second;
 }
 
 }  // namespace
+
+/// What one operation's registers give: ROM 5's reads and multiplier 6's products on
+/// register 1 (Fig. 2 between operations), register 9's passes (the passes written),
+/// multiplier 39 on pass 1, and the features of its last step (pass 2 written, select 36
+/// falling), which the next operation counts again as its "previous" step.
+struct FeatureStream::Settled {
+  RegisterState regs;
+  code_t log_cos = 0, rom5_cos = 0, n_operand = 0;      // ROM 5 on register 1, multiplexer 4 on n
+  code_t log_pass1 = 0, mul6_pass1 = 0, mul39_pass1 = 0;  // register 9's pass 1
+  code_t log_pass2 = 0, rom5_pass2 = 0, mul6_pass2 = 0;   // register 9's pass 2
+  // Pass 2 written: ROM 5's read, the log2 unit's and multiplier 6's (on h) toggles,
+  // multiplier 39's and multipliers 13-15's activity as 39 settles on the result.
+  // (Activities in eighths.)
+  int end_rom5_read = 0, end_log2 = 0, end_mul6 = 0, end_mul39_activity8 = 0, end_mul_rgb_activity8 = 0;
+  // Select 36 falls: ROM 5's bus from pass 2 back to register 1, multiplier 6's second
+  // operand from h back to n.
+  int return_rom5_read = 0, return_mul6_activity8 = 0;
+};
+
+namespace {
+
+using Settled = FeatureStream::Settled;
+
+template <class FormatSet>
+SPECULAR_ENERGY_INLINE Settled settle(const FormatSet& f, const arith::Rom5Table& rom5, code_t h,
+                                      const RegisterState& s) {
+  const Operands& in = s.in;
+  const Result& r = s.r;
+  Settled out;
+  out.regs = s;
+  const code_t bus_cos = arith::mux3(f, false, in.cos, 0);
+  out.log_cos = rom5.log2(f, bus_cos);
+  out.rom5_cos = rom5_address(f, bus_cos);
+  out.n_operand = arith::mux4(f, false, in.n, h);
+  out.log_pass1 = rom5.log2(f, r.reg9_pass1);
+  out.mul6_pass1 = arith::mul6(f, out.log_pass1, h);
+  out.mul39_pass1 = arith::mul39(f, r.reg9_pass1, r.rom38_k);
+  out.log_pass2 = rom5.log2(f, r.reg9_pass2);
+  out.rom5_pass2 = rom5_address(f, r.reg9_pass2);
+  out.mul6_pass2 = arith::mul6(f, out.log_pass2, h);
+  out.end_rom5_read = rom5_address(f, r.reg9_pass1) != out.rom5_pass2;
+  out.end_log2 = toggles(out.log_pass1, out.log_pass2, f.log2.width());
+  out.end_mul6 = toggles(out.mul6_pass1, out.mul6_pass2, f.reg9.width());
+  out.end_mul39_activity8 = activity8(r.reg9_pass1, r.rom38_k, r.reg9_pass2, r.rom38_k, f.reg9.width(), f.rom38.width());
+  int rgb_activity8 = 0;
+  for (int ch = 0; ch < 3; ++ch)
+    rgb_activity8 += activity8(out.mul39_pass1, in.rgb[ch], r.norm39, in.rgb[ch], f.norm.width(), f.rgb.width());
+  out.end_mul_rgb_activity8 = rgb_activity8;
+  out.return_rom5_read = out.rom5_pass2 != out.rom5_cos;
+  out.return_mul6_activity8 = activity8(out.log_pass2, h, out.log_cos, out.n_operand, f.log2.width(), f.mux4.width());
+  return out;
+}
 
 // An operation takes the datapath through three states from the previous operation's
 // end (select 36 high, register 9 its pass 2): the new operands loaded (pass 1 on
@@ -124,74 +155,121 @@ SPECULAR_ENERGY_INLINE Return return_of(const Formats& f, const arith::Rom5Table
 // operation's own and the previous operation's: the gate-level replays count an
 // operation from one result strobe to the next, and where that strobe falls decides
 // which of the two the interval holds (docs/energy/calibration.md).
-//
-// Hardware POPCNT where the CPU has it (every x86-64 since 2008), chosen once at load
-// time: libgcc's portable popcount costs more than the rest of an operation's features.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-__attribute__((target_clones("popcnt", "default")))
-#endif
-Features operation_features(const Formats& f, const RegisterState& before, const RegisterState& after) {
-  const Operands& a = before.in;
-  const Operands& b = after.in;
-  const Result& ra = before.r;
-  const Result& rb = after.r;
+template <class FormatSet>
+SPECULAR_ENERGY_INLINE Features step(const FormatSet& f, const Settled& pa, const Settled& pb) {
+  const Operands& a = pa.regs.in;
+  const Operands& b = pb.regs.in;
+  const Result& ra = pa.regs.r;
+  const Result& rb = pb.regs.r;
   const int reg9 = f.reg9.width();
-  const arith::Rom5Table& rom5 = rom5_for(f);
-  const code_t h = pin19_code(f, Constants::patent);
   // From the start to pass 1 written: ROM 5's bus from the last pass 2 to register 1 to
   // pass 1, multiplier 6's second operand h, n, h.
-  const code_t log_end = rom5.log2(ra.reg9_pass2), log_cos = rom5.log2(arith::mux3(f, false, b.cos, 0));
-  const code_t log_pass1 = rom5.log2(rb.reg9_pass1);
-  const code_t n = arith::mux4(f, false, b.n, h);
-  const code_t mul6_end = arith::mul6(f, log_end, h), mul6_cos = arith::mul6(f, log_cos, n);
-  const code_t mul6_pass1 = arith::mul6(f, log_pass1, h);
+  const code_t mul6_cos = arith::mul6(f, pb.log_cos, pb.n_operand);
   // Multiplier 39: the last pass 2 times the new n's word, then pass 1.
   const code_t mul39_new_k = arith::mul39(f, ra.reg9_pass2, rb.rom38_k);
-  const code_t mul39_pass1 = arith::mul39(f, rb.reg9_pass1, rb.rom38_k);
-  double rgb = 0, mul_rgb = 0, rgb_activity = 0, out_ones = 0;
+  int rgb = 0, mul_rgb = 0, rgb_activity8 = 0, out_ones = 0;
   for (int ch = 0; ch < 3; ++ch) {
     rgb += toggles(a.rgb[ch], b.rgb[ch], f.rgb.width());
-    const code_t p1 = arith::mul_rgb(f, mul39_new_k, b.rgb[ch]), p2 = arith::mul_rgb(f, mul39_pass1, b.rgb[ch]);
+    const code_t p1 = arith::mul_rgb(f, mul39_new_k, b.rgb[ch]), p2 = arith::mul_rgb(f, pb.mul39_pass1, b.rgb[ch]);
     mul_rgb += toggles(ra.out[ch], p1, f.out.width()) + toggles(p1, p2, f.out.width());
-    rgb_activity += activity(ra.norm39, a.rgb[ch], mul39_new_k, b.rgb[ch], f.norm.width(), f.rgb.width()) +
-                    activity(mul39_new_k, b.rgb[ch], mul39_pass1, b.rgb[ch], f.norm.width(), f.rgb.width());
+    rgb_activity8 += activity8(ra.norm39, a.rgb[ch], mul39_new_k, b.rgb[ch], f.norm.width(), f.rgb.width()) +
+                     activity8(mul39_new_k, b.rgb[ch], pb.mul39_pass1, b.rgb[ch], f.norm.width(), f.rgb.width());
     out_ones += ones(rb.out[ch], f.out.width());
   }
-  const double mul39_activity =
-      activity(ra.reg9_pass2, ra.rom38_k, ra.reg9_pass2, rb.rom38_k, reg9, f.rom38.width()) +
-      activity(ra.reg9_pass2, rb.rom38_k, rb.reg9_pass1, rb.rom38_k, reg9, f.rom38.width());
-  const End end = end_of(f, rom5, h, b, rb);
-  const End prev_end = end_of(f, rom5, h, a, ra);
-  const Return ret = return_of(f, rom5, h, b, rb);
-  const Return prev_ret = return_of(f, rom5, h, a, ra);
-  // Fig. 2 between operations: register 1 and register 2 on multiplexers 3 and 4.
-  const code_t bus_a = arith::mux3(f, false, a.cos, 0);
+  const int mul39_activity8 =
+      activity8(ra.reg9_pass2, ra.rom38_k, ra.reg9_pass2, rb.rom38_k, reg9, f.rom38.width()) +
+      activity8(ra.reg9_pass2, rb.rom38_k, rb.reg9_pass1, rb.rom38_k, reg9, f.rom38.width());
   return Features{
       1.0,
-      toggles(a.n, b.n, f.n.width()),
-      a.n != b.n ? 1.0 : 0.0,
-      rgb,
-      toggles(mul6_end, mul6_cos, reg9) + toggles(mul6_cos, mul6_pass1, reg9),
-      mul_rgb,
-      mul39_activity,
-      rgb_activity,
-      end.rom5_read,
-      end.log2,
-      end.mul6,
-      end.mul_rgb_activity,
-      prev_end.log2,
-      prev_end.mul6,
-      prev_end.mul39_activity,
-      prev_end.mul_rgb_activity,
-      rom5_address(f, bus_a) != rom5_address(f, arith::mux3(f, false, b.cos, 0)) ? 1.0 : 0.0,
-      activity(rom5.log2(bus_a), arith::mux4(f, false, a.n, h), log_cos, n, f.log2.width(), f.mux4.width()),
-      ret.rom5_read,
-      ret.mul6_activity,
-      prev_ret.rom5_read,
-      prev_ret.mul6_activity,
-      ones(rb.norm39, f.norm.width()),
-      out_ones,
+      double(toggles(a.n, b.n, f.n.width())),
+      double(a.n != b.n),
+      double(rgb),
+      double(toggles(pa.mul6_pass2, mul6_cos, reg9) + toggles(mul6_cos, pb.mul6_pass1, reg9)),
+      double(mul_rgb),
+      eighths(mul39_activity8),
+      eighths(rgb_activity8),
+      double(pb.end_rom5_read),
+      double(pb.end_log2),
+      double(pb.end_mul6),
+      eighths(pb.end_mul_rgb_activity8),
+      double(pa.end_log2),
+      double(pa.end_mul6),
+      eighths(pa.end_mul39_activity8),
+      eighths(pa.end_mul_rgb_activity8),
+      // Fig. 2 between operations: register 1 and register 2 on multiplexers 3 and 4.
+      double(pa.rom5_cos != pb.rom5_cos),
+      eighths(activity8(pa.log_cos, pa.n_operand, pb.log_cos, pb.n_operand, f.log2.width(), f.mux4.width())),
+      double(pb.return_rom5_read),
+      eighths(pb.return_mul6_activity8),
+      double(pa.return_rom5_read),
+      eighths(pa.return_mul6_activity8),
+      double(ones(rb.norm39, f.norm.width())),
+      double(out_ones),
   };
+}
+
+// Hardware POPCNT where the CPU has it (every x86-64 since 2008), chosen once at load
+// time: libgcc's portable popcount costs more than the rest of an operation's features.
+// Two instantiations: the default widths on DefaultFormats' constants, any other on the
+// run-time Formats.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define SPECULAR_ENERGY_POPCNT __attribute__((target_clones("popcnt", "default")))
+#else
+#define SPECULAR_ENERGY_POPCNT
+#endif
+
+SPECULAR_ENERGY_POPCNT void step_default(const Settled& last, Settled& next, const RegisterState& s,
+                                         const arith::Rom5Table& rom5, code_t h, Features& x) {
+  const DefaultFormats f;
+  next = settle(f, rom5, h, s);
+  x = step(f, last, next);
+}
+
+SPECULAR_ENERGY_POPCNT void step_formats(const Formats& f, const Settled& last, Settled& next,
+                                         const RegisterState& s, const arith::Rom5Table& rom5, code_t h,
+                                         Features& x) {
+  next = settle(f, rom5, h, s);
+  x = step(f, last, next);
+}
+
+Settled settle_any(const Formats& f, bool default_formats, const arith::Rom5Table& rom5, code_t h,
+                   const RegisterState& s) {
+  return default_formats ? settle(DefaultFormats{}, rom5, h, s) : settle(f, rom5, h, s);
+}
+
+}  // namespace
+
+FeatureStream::FeatureStream(const Formats& formats)
+    : formats_(formats),
+      default_formats_(has_default_formats(formats)),
+      pin19_h_(pin19_code(formats, Constants::patent)),
+      rom5_(&shared_rom5(formats)),
+      settled_(std::make_unique<std::array<Settled, 2>>()) {
+  restart_from(reset_state());
+}
+FeatureStream::~FeatureStream() = default;
+FeatureStream::FeatureStream(FeatureStream&&) noexcept = default;
+FeatureStream& FeatureStream::operator=(FeatureStream&&) noexcept = default;
+
+Features FeatureStream::next(const Operands& in, const Result& r) {
+  const Settled& last = (*settled_)[last_];
+  Settled& next = (*settled_)[1 - last_];
+  const RegisterState s{in, r};
+  Features x;
+  if (default_formats_) step_default(last, next, s, *rom5_, pin19_h_, x);
+  else step_formats(formats_, last, next, s, *rom5_, pin19_h_, x);
+  last_ = 1 - last_;
+  return x;
+}
+
+void FeatureStream::restart_from(const RegisterState& registers) {
+  (*settled_)[last_] = settle_any(formats_, default_formats_, *rom5_, pin19_h_, registers);
+}
+
+Features operation_features(const Formats& f, const RegisterState& before, const RegisterState& after) {
+  FeatureStream stream(f);
+  stream.restart_from(before);
+  return stream.next(after.in, after.r);
 }
 
 }  // namespace specular::energy

@@ -45,9 +45,7 @@ class EnergyMeter {
 
   /// One operation whose registers end at `in` and `r` (Core::run's result for `in`).
   void operation(const Operands& in, const Result& r) {
-    const RegisterState after{in, r};
-    const Features x = operation_features(formats_, before_, after);
-    before_ = after;
+    const Features x = features_.next(in, r);
     for (std::size_t i = 0; i < feature_count; ++i) sums_[i] += x[i];
     ++operations_;
   }
@@ -59,7 +57,7 @@ class EnergyMeter {
   /// `words` 32-bit register writes.
   void writes(std::uint64_t words) { writes_ += words; }
   /// The device was reset: its registers hold reset_state() again.
-  void reset_registers() { before_ = reset_state(); }
+  void reset_registers() { features_.restart_from(reset_state()); }
 
   /// The energy so far, with `clocks` clock periods elapsed.
   EnergyTally tally(double clocks) const;
@@ -68,8 +66,7 @@ class EnergyMeter {
 
  private:
   Calibration calibration_;
-  Formats formats_;
-  RegisterState before_ = reset_state();
+  FeatureStream features_;  ///< the registers the next operation counts from
   Features sums_{};
   std::uint64_t operations_ = 0, reads_ = 0, writes_ = 0;
   std::unique_ptr<Core> core_;  ///< for operation(config, in) only

@@ -28,28 +28,25 @@ class OperationEnergy {
   /// For a device whose buses have `formats` (the fit is for the default widths: other
   /// widths are charged by the same coefficients on their own toggles).
   OperationEnergy(Calibration calibration, const Formats& formats)
-      : table_(&table(calibration)), formats_(formats), calibration_(calibration) {}
+      : table_(&table(calibration)), features_(formats), calibration_(calibration) {}
 
   /// pJ of the operation that leaves the registers at `in` and `r` (Core::run's result
   /// for `in`); the next call counts from them.
   double next(const Operands& in, const Result& r) {
-    const RegisterState after{in, r};
-    const Features x = operation_features(formats_, before_, after);
-    before_ = after;
+    const Features x = features_.next(in, r);
     double pj = 0;
     for (std::size_t i = 0; i < feature_count; ++i) pj += table_->pj_per_feature[i] * x[i];
     return pj;
   }
   /// The registers back to their reset values (the device was reset).
-  void reset() { before_ = reset_state(); }
+  void reset() { features_.restart_from(reset_state()); }
   /// The calibration it charges.
   Calibration calibration() const { return calibration_; }
 
  private:
   const CalibrationTable* table_;
-  Formats formats_;
+  FeatureStream features_;  ///< the registers the next operation counts from
   Calibration calibration_;
-  RegisterState before_ = reset_state();
 };
 
 }  // namespace specular::energy

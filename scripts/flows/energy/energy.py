@@ -40,168 +40,17 @@ import argparse
 import json
 import os
 import re
-import subprocess
 import sys
 from collections import defaultdict
 
 VDD = 1.8
 
 
-# ---------------------------------------------------------------- Liberty (small reader)
-def _lib_tokens(text):
-    text = re.sub(r"/\*.*?\*/", " ", text, flags=re.S)
-    text = text.replace("\\\n", " ")
-    return re.findall(r'"[^"]*"|[A-Za-z0-9_.\-+\[\]!\'&|^*]+|[{}();:,]', text)
-
-
-def _lib_parse(tokens):
-    """Groups as dicts: {'type', 'args', 'attrs', 'groups'}."""
-    root = {"type": "root", "args": [], "attrs": {}, "groups": []}
-    stack = [root]
-    i, n = 0, len(tokens)
-    while i < n:
-        t = tokens[i]
-        if t == "}":
-            stack.pop()
-            i += 1
-            continue
-        if i + 1 < n and tokens[i + 1] == ":":
-            j = i + 2
-            val = []
-            while j < n and tokens[j] != ";" and tokens[j] != "}":
-                val.append(tokens[j])
-                j += 1
-            stack[-1]["attrs"][t] = " ".join(val).strip('"')
-            i = j + 1 if j < n and tokens[j] == ";" else j
-            continue
-        if i + 1 < n and tokens[i + 1] == "(":
-            j = i + 2
-            args = []
-            while tokens[j] != ")":
-                if tokens[j] != ",":
-                    args.append(tokens[j].strip('"'))
-                j += 1
-            j += 1
-            if j < n and tokens[j] == "{":
-                g = {"type": t, "args": args, "attrs": {}, "groups": []}
-                stack[-1]["groups"].append(g)
-                stack.append(g)
-                i = j + 1
-            else:  # complex attribute: name (args);
-                stack[-1]["attrs"][t] = args
-                i = j + 1 if j < n and tokens[j] == ";" else j
-            continue
-        i += 1
-    return root
-
-
-def _floats(s):
-    return [float(x) for x in re.split(r"[,\s]+", s.strip()) if x]
-
-
-class Table:
-    """A Liberty table with its template's variables; lookup(load=, slew=) bilinear,
-    extrapolated linearly beyond the index (as OpenSTA does)."""
-
-    def __init__(self, group, templates):
-        tpl = templates.get(group["args"][0] if group["args"] else "", {})
-        self.vars = []
-        self.index = []
-        for k in (1, 2):
-            var = tpl.get(f"variable_{k}")
-            idx = group["attrs"].get(f"index_{k}") or tpl.get(f"index_{k}")
-            if var is None:
-                continue
-            self.vars.append(var)
-            self.index.append(_floats(idx[0] if isinstance(idx, list) else idx))
-        vals = group["attrs"].get("values")
-        rows = [_floats(v) for v in (vals if isinstance(vals, list) else [vals])]
-        self.values = rows
-
-    @staticmethod
-    def _seg(index, x):
-        if len(index) == 1:
-            return 0, 0, 0.0
-        k = 0
-        while k < len(index) - 2 and x > index[k + 1]:
-            k += 1
-        f = (x - index[k]) / (index[k + 1] - index[k])
-        return k, k + 1, f
-
-    def lookup(self, load=0.0, slew=0.0):
-        x = [load if "capacitance" in v else slew for v in self.vars]
-        if len(self.vars) == 0:
-            return self.values[0][0]
-        if len(self.vars) == 1:
-            row = self.values[0] if len(self.values) == 1 else [r[0] for r in self.values]
-            a, b, f = self._seg(self.index[0], x[0])
-            return row[a] + f * (row[b] - row[a])
-        a, b, f = self._seg(self.index[0], x[0])
-        c, d, g = self._seg(self.index[1], x[1])
-        v = self.values
-        top = v[a][c] + g * (v[a][d] - v[a][c])
-        bot = v[b][c] + g * (v[b][d] - v[b][c])
-        return top + f * (bot - top)
-
-
-class Library:
-    """Cells: pins (direction, capacitance, bus width), internal power, leakage."""
-
-    def __init__(self, paths):
-        self.cells = {}
-        for path in paths:
-            root = _lib_parse(_lib_tokens(open(path).read()))
-            for lib in root["groups"]:
-                templates = {}
-                for g in lib["groups"]:
-                    if g["type"] in ("lu_table_template", "power_lut_template"):
-                        templates[g["args"][0]] = {k: v for k, v in g["attrs"].items()}
-                for g in lib["groups"]:
-                    if g["type"] == "cell":
-                        self.cells[g["args"][0]] = self._cell(g, templates)
-
-    @staticmethod
-    def _cell(g, templates):
-        cell = {"leakage_nw": float(g["attrs"].get("cell_leakage_power", 0.0)),
-                "area": float(g["attrs"].get("area", 0.0)), "pins": {}}
-        pins = []
-        for p in g["groups"]:
-            if p["type"] == "pin":
-                pins.append((p["args"][0], p, None))
-            elif p["type"] == "bus":
-                pins.append((p["args"][0], p, True))
-                for q in p["groups"]:
-                    if q["type"] == "pin":
-                        pins.append((q["args"][0], q, None))
-        for name, p, is_bus in pins:
-            entry = cell["pins"].setdefault(name, {"direction": None, "cap": 0.0, "power": []})
-            if "direction" in p["attrs"]:
-                entry["direction"] = p["attrs"]["direction"]
-            if "capacitance" in p["attrs"]:
-                entry["cap"] = float(p["attrs"]["capacitance"])
-            for ip in p["groups"]:
-                if ip["type"] != "internal_power":
-                    continue
-                tabs = {t["type"]: Table(t, templates) for t in ip["groups"]
-                        if t["type"] in ("rise_power", "fall_power")}
-                entry["power"].append({"related": ip["attrs"].get("related_pin"),
-                                       "rise": tabs.get("rise_power"), "fall": tabs.get("fall_power")})
-        # bus bits inherit the bus's direction and capacitance
-        for name, p, is_bus in pins:
-            if is_bus:
-                for q in p["groups"]:
-                    if q["type"] == "pin":
-                        bit = cell["pins"][q["args"][0]]
-                        bit["direction"] = bit["direction"] or cell["pins"][name]["direction"]
-                        bit["cap"] = bit["cap"] or cell["pins"][name]["cap"]
-        return cell
-
-    def pin(self, cell, pin):
-        """The pin entry of cell.pin (a bus bit A[3] falls back to the bus A)."""
-        c = self.cells[cell]["pins"]
-        if pin in c:
-            return c[pin]
-        return c.get(re.sub(r"\[\d+\]$", "", pin))
+# ---------------------------------------------------------------- Liberty, VCD, runner
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))  # scripts/
+from specular_flows.liberty import Library  # noqa: E402
+from specular_flows.run import run  # noqa: E402
+from specular_flows import vcd  # noqa: E402
 
 
 # ---------------------------------------------------------------- netlist (Yosys output)
@@ -415,46 +264,24 @@ def read_vcd(path, wanted, weights, strobe, mode, clock, groups, t_begin):
     results, cumulative pJ), the end time (ps), the timescale in ps."""
     ids = {}          # vcd id -> [(global net, bit index or None)]
     widths = {}       # vcd id -> declared width
-    scope = []
-    timescale_ps = 1.0
     f = open(path)
-    for line in f:
-        s = line.split()
-        if not s:
-            continue
-        if s[0] == "$timescale":
-            txt = " ".join(s[1:])
-            while "$end" not in txt:
-                txt += " " + f.readline().strip()
-            m = re.match(r"\s*(\d+)\s*([munpf]?s)", txt)
-            timescale_ps = int(m.group(1)) * {"s": 1e12, "ms": 1e9, "us": 1e6, "ns": 1e3,
-                                              "ps": 1.0, "fs": 1e-3}[m.group(2)]
-        elif s[0] == "$scope":
-            scope.append(s[2])
-        elif s[0] == "$upscope":
-            scope.pop()
-        elif s[0] == "$var":
-            width, vid, name = int(s[2]), s[3], s[4]
-            rng = s[5] if len(s) > 5 and s[5].startswith("[") else None
-            base = ".".join(scope)
-            if name.startswith("\\"):
-                name = name[1:]
-            targets = []
-            if rng is None or width == 1:
-                bitn = name if rng is None else f"{name}{rng}"
-                targets.append((wanted.get((base, bitn)), None))
-            else:
-                m = re.match(r"\[(\d+):(\d+)\]", rng)
-                hi, lo = int(m.group(1)), int(m.group(2))
-                step = -1 if hi >= lo else 1
-                for pos, k in enumerate(range(hi, lo + step, step)):
-                    targets.append((wanted.get((base, f"{name}[{k}]")), pos))
-            targets = [(g, pos) for g, pos in targets if g is not None]
-            if targets:
-                ids.setdefault(vid, []).extend(targets)
-                widths[vid] = width
-        elif s[0] == "$enddefinitions":
-            break
+    timescale_ps, variables = vcd.read_header(f)
+    for var in variables:
+        width, vid, name, rng, base = var.width, var.id, var.name, var.range, var.scope
+        targets = []
+        if rng is None or width == 1:
+            bitn = name if rng is None else f"{name}{rng}"
+            targets.append((wanted.get((base, bitn)), None))
+        else:
+            m = re.match(r"\[(\d+):(\d+)\]", rng)
+            hi, lo = int(m.group(1)), int(m.group(2))
+            step = -1 if hi >= lo else 1
+            for pos, k in enumerate(range(hi, lo + step, step)):
+                targets.append((wanted.get((base, f"{name}[{k}]")), pos))
+        targets = [(g, pos) for g, pos in targets if g is not None]
+        if targets:
+            ids.setdefault(vid, []).extend(targets)
+            widths[vid] = width
     value = {}        # global net -> '0'/'1'/'x'
     rises = defaultdict(int)
     falls = defaultdict(int)
@@ -527,28 +354,10 @@ def read_vcd(path, wanted, weights, strobe, mode, clock, groups, t_begin):
         pending.clear()
 
     groups_energy = read_vcd.groups_energy
-    for line in f:
-        c = line[0] if line else ""
-        if c == "#":
-            if pending:
-                flush()
-            t_ps = int(line[1:]) * timescale_ps
-        elif c in "01xzXZ":
-            vid = line[1:].strip()
-            if vid in ids:
-                pending[vid] = c.lower()
-        elif c in "bB":
-            val, vid = line[1:].split()
-            if vid in ids:
-                val = val.lower()
-                w = widths[vid]
-                if len(val) < w:  # leading zeros (or x, z) left out: pad to the width
-                    val = (val[0] if val[0] in "xz" else "0") * (w - len(val)) + val
-                pending[vid] = val
-        elif c in "rR":
-            pass
-    if pending:
+    changes = vcd.Changes(f, timescale_ps, widths)
+    for t_ps, pending in changes:
         flush()
+    t_ps = changes.end_ps
     # a variant's testbench stops just before the edge after its last valid: the result
     # held when the replay ends is one (rtl/tb/specular_variant_tb.v)
     if mode == "clk_valid" and strobe_val == "1" and t_ps >= begin_ps:
@@ -561,7 +370,7 @@ read_vcd.groups_energy = {}
 read_vcd.groups_access_ps = {}
 
 
-def count_with_tool(tool, out, vcd, wanted, weights, strobe, mode, clock, groups, t_begin):
+def count_with_tool(tool, out, vcd_path, wanted, weights, strobe, mode, clock, groups, t_begin):
     """read_vcd's answer from tools/vcd_activity/specular_vcd_activity (the same rules,
     about 20 times as fast on a VCD of hundreds of MB): the map of global nets, their
     weights, the ROM groups and the strobe written beside OUT, the counts read back."""
@@ -582,9 +391,7 @@ def count_with_tool(tool, out, vcd, wanted, weights, strobe, mode, clock, groups
         if clock is not None:
             f.write(f"clock\t{index[clock]}\n")
         f.write(f"begin\t{t_begin * 1e3!r}\n")
-    r = subprocess.run([tool, map_file, vcd, counts_file], capture_output=True, text=True)
-    if r.returncode != 0:
-        raise SystemExit(f"energy.py: {tool} failed ({r.returncode}): {r.stderr.strip()}")
+    run([tool, map_file, vcd_path, counts_file], "energy.py")
     rises, falls = defaultdict(int), defaultdict(int)
     reads = {g: 0 for g in groups}
     checkpoints = []

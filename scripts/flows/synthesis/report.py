@@ -17,6 +17,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))  # scripts/
+from specular_flows import liberty  # noqa: E402
+
 UTILISATION = 0.70     # standard-cell rows: cells over row area (room for wiring)
 MACRO_HALO = 1.10      # ROM macros: 10 % halo for their power ring and pin access
 
@@ -74,13 +77,6 @@ def parse_stat(text):
     for m in re.finditer(r"^\s+([A-Z][A-Z0-9_]+)\s+(\d+)$", tail, re.M):
         flat[m.group(1)] = int(m.group(2))
     return modules, instances, flat
-
-
-def lib_areas(lib_text):
-    areas = {}
-    for m in re.finditer(r"cell\s*\(\s*(\w+)\s*\)\s*\{[^}]*?area\s*:\s*([\d.]+)", lib_text):
-        areas[m.group(1)] = float(m.group(2))
-    return areas
 
 
 def parse_path(path_file):
@@ -174,7 +170,7 @@ def main():
     modules, instances, flat = parse_stat(read(f"{out}/stat.txt"))
     roms = json.loads(read(f"{out}/rom_model.json"))
     macros = {m["name"]: m for m in roms["macros"]}
-    osu = lib_areas(read(os.environ.get("SPECULAR_OSU018_LIB",
+    osu = liberty.cell_areas(read(os.environ.get("SPECULAR_OSU018_LIB",
                                         "/usr/share/qflow/tech/osu018/osu018_stdcells.lib")))
 
     def own_area(label):

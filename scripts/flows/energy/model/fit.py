@@ -26,8 +26,10 @@ import argparse
 import json
 import math
 import os
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))))  # scripts/
+from specular_flows.run import run  # noqa: E402
 
 DEVICES = [("specular_device_sync", "synchronous_device_table", "synchronous device"),
            ("specular_device", "drawn_device_table", "drawn device (Fig. 2)")]
@@ -108,9 +110,7 @@ def read_tsv(path):
 
 def features_of(tool, stream, work):
     out = os.path.join(work, os.path.basename(stream).replace(".txt", ".features.tsv"))
-    r = subprocess.run([tool, stream, out], capture_output=True, text=True)
-    if r.returncode != 0:
-        die(f"{tool} {stream} failed ({r.returncode}): {r.stderr.strip()}", 1)
+    run([tool, stream, out], "fit.py", f"{tool} {stream}")
     header, rows = read_tsv(out)
     return header[1:], {int(row[0]): row[1:] for row in rows}
 

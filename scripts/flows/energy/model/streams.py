@@ -36,8 +36,10 @@ import argparse
 import math
 import os
 import random
-import subprocess
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))))  # scripts/
+from specular_flows.run import run  # noqa: E402
 
 ONE = 1 << 16
 
@@ -51,10 +53,7 @@ def line(cos_code, n, r, g, b):
 
 
 def from_tool(tool, seed, count, skip):
-    r = subprocess.run([tool, "patent", "--count", str(count), "--seed", str(seed), "--out", "/dev/stdout"],
-                       capture_output=True, text=True)
-    if r.returncode != 0:
-        raise SystemExit(f"streams.py: {tool} failed ({r.returncode}): {r.stderr.strip()}")
+    r = run([tool, "patent", "--count", str(count), "--seed", str(seed), "--out", "/dev/stdout"], "streams.py")
     rows = [" ".join(l.split()[:5]) for l in r.stdout.splitlines() if l.strip()]
     if len(rows) != count:
         raise SystemExit(f"streams.py: {tool} wrote {len(rows)} operations, not {count}")

@@ -23,19 +23,20 @@ set -euo pipefail
 #                                       5.006 compiles it into C++ models, Icarus Verilog 11
 #                                       runs its Verilog testbench, Yosys 0.23 lints and
 #                                       synthesises it (scripts/flows/synthesis/synth.sh)
-#   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/flows/synthesis/silicon.sh, gatesim.sh,
-#                                       docs/silicon.md): the OSU 0.18 um standard cells
-#                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
-#   qflow, graywolf, qrouter, magic,    the layout (scripts/flows/layout/layout.sh, docs/silicon/layout.md "Layout: placed, routed, DRC and LVS checked",
-#   netgen-lvs, tcsh, klayout           issue 48): qflow 1.3.17's scripts (tcsh) drive graywolf
+#   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/flows/synthesis/silicon.sh,
+#                                       scripts/flows/gatelevel/gatesim.sh, docs/silicon.md): the
+#                                       OSU 0.18 um standard cells (Liberty, Verilog models),
+#                                       OpenSTA (`sta`), bc
+#   qflow, graywolf, qrouter, magic,    the layout (scripts/flows/layout/layout.sh, issue 48,
+#   netgen-lvs, tcsh, klayout           docs/silicon/layout.md): qflow 1.3.17's scripts (tcsh) drive graywolf
 #                                       placement and qrouter routing, magic checks DRC and
 #                                       extracts, netgen compares (LVS), klayout draws the die
 #   nlohmann-json3-dev                  JSON: specular_tb's report settings and summary, the partial
 #                                       results of sharded runs (--shard, --partial, --merge)
 #   libcli11-dev                        every command's options, --help, --version and
 #                                       specular_tb's --config (run_support/cli.h)
-#   slurm-wlm, munge, jq                scripts/farm/farm.sh on Slurm, scripts/farm/slurm_cluster.sh (a
-#                                       single-node cluster) and its test tests/farm/farm_test.sh
+#   slurm-wlm, munge, jq                scripts/farm/farm.sh on Slurm, scripts/farm/slurm_cluster.sh
+#                                       (a single-node cluster) and its test tests/farm/farm_test.sh
 #                                       (jq compares the merged and unsharded JSON)
 PACKAGES=(
   build-essential cmake pkg-config

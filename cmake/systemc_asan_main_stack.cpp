@@ -1,5 +1,5 @@
 // The main thread's stack, told to AddressSanitizer where SystemC 2.3.4 leaves it out
-// (issue 45; docs/testing.md, "Sanitizers and SystemC's coroutines").
+// (issue 45; docs/testing/sanitizers.md, "Sanitizers and SystemC's coroutines").
 //
 // Why: SystemC 2.3.4 tells ASan of its QuickThreads stack switches through the weak
 // __sanitizer_start_switch_fiber / __sanitizer_finish_switch_fiber, but

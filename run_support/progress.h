@@ -5,7 +5,7 @@
 // One implementation for every long run (library specular_progress): specular_tb, the
 // studies' stages (specular_study), the soak's stages (specular_soak), the proofs
 // (specular_prove, the farm's proof tasks) and, through the specular_progress tool, the
-// gate-level replays (scripts/gatesim.sh).
+// gate-level replays (scripts/flows/gatelevel/gatesim.sh).
 #pragma once
 
 #include <chrono>

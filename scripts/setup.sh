@@ -17,25 +17,26 @@ set -euo pipefail
 #   graphviz                            scripts/render_figures.sh (docs/fig1.svg, fig2.svg)
 #   python3-numpy, python3-matplotlib   plots of the numerical study
 #   gnuplot-nox                         quick plots from the testbench's CSV output
-#   clang-14, libclang-rt-14-dev        scripts/fuzz.sh: libFuzzer and clang's sanitizer
+#   clang-14, libclang-rt-14-dev        scripts/verify/fuzz.sh: libFuzzer and clang's sanitizer
 #                                       runtimes (libclang_rt.fuzzer, asan, ubsan)
 #   verilator, iverilog, yosys          the RTL twin (rtl/, twin/, docs/rtl.md): Verilator
 #                                       5.006 compiles it into C++ models, Icarus Verilog 11
 #                                       runs its Verilog testbench, Yosys 0.23 lints and
-#                                       synthesises it (scripts/synth.sh)
-#   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/silicon.sh, gatesim.sh,
-#                                       docs/silicon.md): the OSU 0.18 um standard cells
-#                                       (Liberty, Verilog models), OpenSTA (`sta`), bc
-#   qflow, graywolf, qrouter, magic,    the layout (scripts/layout.sh, docs/silicon.md "Layout",
-#   netgen-lvs, tcsh, klayout           issue 48): qflow 1.3.17's scripts (tcsh) drive graywolf
+#                                       synthesises it (scripts/flows/synthesis/synth.sh)
+#   qflow-tech-osu018, opensta, bc      the silicon flow (scripts/flows/synthesis/silicon.sh,
+#                                       scripts/flows/gatelevel/gatesim.sh, docs/silicon.md): the
+#                                       OSU 0.18 um standard cells (Liberty, Verilog models),
+#                                       OpenSTA (`sta`), bc
+#   qflow, graywolf, qrouter, magic,    the layout (scripts/flows/layout/layout.sh, issue 48,
+#   netgen-lvs, tcsh, klayout           docs/silicon/layout.md): qflow 1.3.17's scripts (tcsh) drive graywolf
 #                                       placement and qrouter routing, magic checks DRC and
 #                                       extracts, netgen compares (LVS), klayout draws the die
 #   nlohmann-json3-dev                  JSON: specular_tb's report settings and summary, the partial
 #                                       results of sharded runs (--shard, --partial, --merge)
 #   libcli11-dev                        every command's options, --help, --version and
 #                                       specular_tb's --config (run_support/cli.h)
-#   slurm-wlm, munge, jq                scripts/farm.sh on Slurm, scripts/slurm_cluster.sh (a
-#                                       single-node cluster) and its test tests/farm/farm_test.sh
+#   slurm-wlm, munge, jq                scripts/farm/farm.sh on Slurm, scripts/farm/slurm_cluster.sh
+#                                       (a single-node cluster) and its test tests/farm/farm_test.sh
 #                                       (jq compares the merged and unsharded JSON)
 PACKAGES=(
   build-essential cmake pkg-config
@@ -48,7 +49,7 @@ PACKAGES=(
   clang-14 libclang-rt-14-dev
   verilator iverilog yosys
   qflow-tech-osu018 opensta bc
-  qflow graywolf qrouter magic netgen-lvs tcsh klayout  # scripts/layout.sh: place, route, DRC, LVS, the die's picture
+  qflow graywolf qrouter magic netgen-lvs tcsh klayout  # scripts/flows/layout/layout.sh: place, route, DRC, LVS, the die's picture
   nlohmann-json3-dev
   libcli11-dev
   slurm-wlm munge jq

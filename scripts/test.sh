@@ -8,11 +8,11 @@
 #   scripts/test.sh --full     the same with every long test whole and the nightly ones
 #   scripts/test.sh --quick    skip the tests labelled long (exhaustive sweeps, soak)
 #
-# Then, unless skipped: the consumer of the installed package (scripts/consumer_check.sh;
-# SPECULAR_SKIP_CONSUMER=1 skips it), the quick suite under ASan/UBSan/LSan (scripts/sanitize.sh,
+# Then, unless skipped: the consumer of the installed package (scripts/verify/consumer_check.sh;
+# SPECULAR_SKIP_CONSUMER=1 skips it), the quick suite under ASan/UBSan/LSan (scripts/verify/sanitize.sh,
 # build-asan; SPECULAR_SKIP_SANITIZE=1 skips it) and a bounded libFuzzer run, 30 s per
-# target (scripts/fuzz.sh, build-fuzz; SPECULAR_SKIP_FUZZ=1 skips it). Each stage's wall
-# time is printed at its end and all of them at exit (docs/testing.md, "CI budget").
+# target (scripts/verify/fuzz.sh, build-fuzz; SPECULAR_SKIP_FUZZ=1 skips it). Each stage's wall
+# time is printed at its end and all of them at exit (docs/testing/ci_budget.md, "Measured").
 # Needs the packages of scripts/setup.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -68,16 +68,16 @@ stage ctest ctest "${ctest_args[@]}"
 # The IP as a package: install, then build a consumer with find_package and with
 # add_subdirectory (docs/tlm.md). SPECULAR_SKIP_CONSUMER=1 skips it.
 if [ "${SPECULAR_SKIP_CONSUMER:-0}" != 1 ]; then
-  echo "+ scripts/consumer_check.sh build"
-  stage consumer_check scripts/consumer_check.sh build
+  echo "+ scripts/verify/consumer_check.sh build"
+  stage consumer_check scripts/verify/consumer_check.sh build
 fi
 
 # Hardening (docs/misuse.md).
 if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ]; then
-  echo "+ scripts/sanitize.sh"
-  stage sanitize scripts/sanitize.sh
+  echo "+ scripts/verify/sanitize.sh"
+  stage sanitize scripts/verify/sanitize.sh
 fi
 if [ "${SPECULAR_SKIP_FUZZ:-0}" != 1 ]; then
-  echo "+ scripts/fuzz.sh 30"
-  stage fuzz scripts/fuzz.sh 30
+  echo "+ scripts/verify/fuzz.sh 30"
+  stage fuzz scripts/verify/fuzz.sh 30
 fi

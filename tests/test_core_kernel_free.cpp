@@ -1,7 +1,7 @@
 // SpecularUnit::core is kernel-free (issue 29): a plain int main() links it without
 // libsystemc and computes Core's bits. Runs the project's build of
 // examples/consumer/core_main.cpp (specular_core_example), which checks Core against
-// the patent's formula in double within the documented bound; scripts/consumer_check.sh
+// the patent's formula in double within the documented bound; scripts/verify/consumer_check.sh
 // does the same against the installed package.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Misuse of specular_tb's command line and files (docs/misuse.md, "CLI"): each row of
+// Misuse of specular_tb's command line and files (docs/misuse.md, "Command line and files"): each row of
 // the table as a user meets it — a subprocess, its exit status, its message, and the
 // files it leaves. Every refusal exits 2 before anything runs, names the bad value and
 // the allowed range, prints nothing on standard output and leaves no output file.

@@ -21,7 +21,7 @@ TEST(PowerOn, DatapathRegistersHoldZeroAndTheControlUnitIsIdle) {
   run_scenario(Config{}, [&](ProtocolBench& b) {
     b.at(b.period() / 4);  // the clock has risen once (at 0); nothing else happened
     SpecularDevice& d = b.dut();
-    // docs/misuse.md "Power-on values": every datapath register holds code 0.
+    // docs/misuse.md "Power-on and reset": every datapath register holds code 0.
     for (const bus_signal* reg : {&d.reg1_q, &d.reg2_q, &d.reg9_q, &d.reg10_q, &d.reg11_q, &d.reg12_q})
       EXPECT_EQ(reg->read(), 0) << reg->name();
     for (const bus_signal* pin : {&b.harness.pin24_r, &b.harness.pin25_g, &b.harness.pin26_b})

@@ -40,7 +40,7 @@ std::vector<std::string> split(const std::string& line) {
   return cells;
 }
 
-// The header each file must carry (what scripts/plot_study.py reads).
+// The header each file must carry (what scripts/flows/design_space/plot_study.py reads).
 const std::map<std::string, std::string> expected_headers = {
     {"error_curves.csv",
      "n,lambda_deg,cos,exact,device_clamp,device_literal,formula_clamp,formula_literal,schlick,"
@@ -180,7 +180,7 @@ TEST(StudyExecutable, PlotScriptDrawsEveryPicture) {
   const fs::path& dir = scratch.path;
   ASSERT_EQ(quick_run(dir).status, 0);
   const Outcome r = run_command(python + " '" + std::string(SPECULAR_SOURCE_DIR) +
-                            "/scripts/plot_study.py' '" + (dir / "out").string() + "' '" +
+                            "/scripts/flows/design_space/plot_study.py' '" + (dir / "out").string() + "' '" +
                             (dir / "png").string() + "'",
                         dir);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -196,7 +196,7 @@ TEST(StudyExecutable, PlotScriptDrawsEveryPicture) {
   }
   // A missing study directory is named.
   const Outcome missing =
-      run_command(python + " '" + std::string(SPECULAR_SOURCE_DIR) + "/scripts/plot_study.py' '" +
+      run_command(python + " '" + std::string(SPECULAR_SOURCE_DIR) + "/scripts/flows/design_space/plot_study.py' '" +
               (dir / "nothing").string() + "' '" + (dir / "png").string() + "'",
           dir);
   EXPECT_NE(missing.status, 0);

@@ -41,7 +41,7 @@ TEST(TbProgress, UnitAndLabelNameWhatIsCounted) {
   EXPECT_EQ(out.str().rfind("\r  gatesim: 1 / 4 periods tried (25.0%), ", 0), 0u) << out.str();
 }
 
-// The scripts' progress (scripts/gatesim.sh): the same line through specular_progress.
+// The scripts' progress (scripts/flows/gatelevel/gatesim.sh): the same line through specular_progress.
 TEST(TbProgress, ToolPrintsTheLineAndRefusesBadValues) {
   const std::string tool = std::string(SPECULAR_BINARY_DIR) + "/tools/progress/specular_progress";
   const auto dir = scratch_dir();

@@ -1,7 +1,7 @@
 // The TLM targets' energy model and power trace (issue 61, docs/energy.md), checked
 // against the gate-level figures measured by the energy flow, written here as the
 // measurements give them (specular_ip_axi's energy_ip.sh of 6 December 2026,
-// scripts/energy_model/data/energy_ip.json: idle clock 143.4 pJ, a register read
+// scripts/flows/energy/model/data/energy_ip.json: idle clock 143.4 pJ, a register read
 // 305.9 pJ over its 2 clocks, a write 478.4 pJ over its 3;
 // docs/design_space/energy_per_result.md: 4 789 pJ per result for the synchronous
 // device, 5 094 pJ for the drawn one, over random operands with n uniform and cos^n

@@ -522,7 +522,7 @@ TEST_P(SocPlatform, RunsFiftyOperationsEqualToCore) {
   // on the device the target models. The example draws cos and n uniform, so cos^n is 0
   // for most: cheaper than the random operands' mean (docs/design_space/energy_per_result.md:
   // 5 094 pJ drawn, 4 789 pJ synchronous). The gate-level replays' operations of that
-  // kind (scripts/energy_model/data, train_changes' 29 that change cos, n and R, G, B at
+  // kind (scripts/flows/energy/model/data, train_changes' 29 that change cos, n and R, G, B at
   // once): 3 986 pJ drawn, 3 787 pJ synchronous; within 15 % (50 operations).
   std::smatch m;
   ASSERT_TRUE(std::regex_search(outcome.out, m, std::regex(R"(pJ per operation \(operations ([0-9.]+),)")))

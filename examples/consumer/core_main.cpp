@@ -1,7 +1,7 @@
 // A plain C++ program (int main, no SystemC kernel) that computes the device's bits with
 // specular::Core, as a test generator or a firmware unit test would. It links
 // SpecularUnit::core only (issue 29): no libsystemc, so no sc_main is needed.
-// scripts/consumer_check.sh builds it against the installed package and checks that it
+// scripts/verify/consumer_check.sh builds it against the installed package and checks that it
 // needs no SystemC library; the project builds it as specular_core_example.
 //
 // Each result is checked against the patent's formula computed here in double, from

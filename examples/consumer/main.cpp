@@ -1,4 +1,4 @@
-// A consumer of the installed IP (scripts/consumer_check.sh builds it against
+// A consumer of the installed IP (scripts/verify/consumer_check.sh builds it against
 // `cmake --install` and through add_subdirectory): a CPU thread runs one operation
 // on the TLM `lt` target and checks it against the double reference.
 // The lines between the [example] markers are the ten-line example of docs/tlm.md

@@ -1,5 +1,5 @@
 // Variant schlick (issue 26, docs/variants/schlick.md) behind the common ports
-// (docs/design_space.md, "Conventions"): cos^n by Schlick's rational approximation
+// (docs/design_space/flow.md, "Conventions (every variant follows them)"): cos^n by Schlick's rational approximation
 // x / (n - (n-1)*x) instead of the patent's two log2 passes, then the device's own tail
 // (ROM 38, multiplier 39, multipliers 13-15). A pipeline: a start on every clock; a
 // start taken at edge t is in register 9 at edge t+2, valid in the clock after it.

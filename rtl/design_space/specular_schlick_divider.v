@@ -1,5 +1,5 @@
 // Variant schlick_divider (issue 26, docs/variants/schlick.md) behind the common ports
-// (docs/design_space.md, "Conventions"): Schlick's x / (n - (n-1)*x) as variant
+// (docs/design_space/flow.md, "Conventions (every variant follows them)"): Schlick's x / (n - (n-1)*x) as variant
 // schlick, the quotient by a restoring divider (one bit per clock) instead of a
 // reciprocal table and multipliers: the smallest datapath, 24 clocks per result.
 //   start edge: d = n*2^16 - (n-1)*cos (schlick_denominator) and the divider's first

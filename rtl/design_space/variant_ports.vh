@@ -1,4 +1,4 @@
-// The design variants' common ports (docs/design_space.md, "Conventions"), written once:
+// The design variants' common ports (docs/design_space/flow.md, "Conventions (every variant follows them)"), written once:
 // every top here opens with `module specular_NAME #(...) (` followed by
 // `include "variant_ports.vh"`. One result per start; what differs between the tops is
 // only when a start is taken (ready) and how many clocks later valid rises.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""design_space_energy: scripts/design_space.py --energy-table on four made-up designs
+"""design_space_energy: scripts/flows/design_space/design_space.py --energy-table on four made-up designs
 (issue 36). A design's energy per result is its random operands' mean, not the whole
 stream's: design d, cheapest over its whole stream (500 pJ) but dearest over its random
 operands (3 000 pJ), is on no front; a (1 000 pJ, error 0.1, 2.0 mm²) and b (2 000 pJ,

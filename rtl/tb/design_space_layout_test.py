@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""design_space_layout: scripts/design_space.py --layout-dir on made-up designs (issue 48):
+"""design_space_layout: scripts/flows/design_space/design_space.py --layout-dir on made-up designs (issue 48):
 the fronts are drawn from each design's figure after layout where it has one, its
 estimate otherwise, and a layout that is not clean is no figure.
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""layout_block: scripts/layout.sh lays out Fig. 2's control unit end to end (issue 48).
+"""layout_block: scripts/flows/layout/layout.sh lays out Fig. 2's control unit end to end (issue 48).
 
   layout_block_test.py PROJECT_ROOT SCRATCH [PLANT|resume|no-cleanup]
 
-Maps control_unit16 onto the OSU 0.18 um cells with Yosys as scripts/silicon.sh does
-(Fig. 2's gates kept as the library cells of scripts/silicon/fig2_cells.v), then runs
-scripts/layout.sh on it.
+Maps control_unit16 onto the OSU 0.18 um cells with Yosys as scripts/flows/synthesis/silicon.sh does
+(Fig. 2's gates kept as the library cells of scripts/flows/synthesis/fig2_cells.v), then runs
+scripts/flows/layout/layout.sh on it.
   - Without PLANT: layout.sh exits 0 and its summary says no unrouted net, 0 DRC errors,
     LVS match; the layout holds the 10 cells of Fig. 2 (inverter 44, AND 40, NANDs 45-47,
     flip-flops 41-43, the two /Q inverters: written here from the figure, docs/silicon.md)
@@ -61,14 +61,14 @@ def main():
     netlist = f"{scratch}/control_unit16.v"
     prims = " ".join(f"{root}/rtl/primitives/{f}" for f in sorted(os.listdir(f"{root}/rtl/primitives")))
     script = (f"read_liberty -lib {lib}; read_verilog {prims} {root}/rtl/device/control_unit16.v; "
-              f"read_verilog -overwrite {root}/scripts/silicon/fig2_cells.v; "
+              f"read_verilog -overwrite {root}/scripts/flows/synthesis/fig2_cells.v; "
               "hierarchy -check -top control_unit16; flatten; proc; opt; techmap; opt; "
               f"dfflibmap -liberty {lib}; abc -fast -liberty {lib}; opt_clean; "
               f"write_verilog -noattr {netlist}")
     r = subprocess.run(["yosys", "-q", "-p", script], capture_output=True, text=True)
     if r.returncode != 0:
         fail(f"yosys could not map control_unit16: {r.stderr[-500:]}")
-    cmd = ["bash", f"{root}/scripts/layout.sh", "--netlist", netlist, "--top", "control_unit16"]
+    cmd = ["bash", f"{root}/scripts/flows/layout/layout.sh", "--netlist", netlist, "--top", "control_unit16"]
     if plant:
         cmd += ["--plant", plant]
     if no_cleanup:
@@ -157,7 +157,7 @@ def check_resume(root, netlist, out):
         subprocess.run(["qrouter", "-nog", "-s", f"{top}.cfg"], cwd=proj, stdout=f, stderr=subprocess.STDOUT)
     if not os.path.exists(f"{proj}/{top}_route.def") or not os.path.exists(f"{proj}/{top}_route.rc"):
         fail("qrouter by hand wrote no TOP_route.def and TOP_route.rc")
-    r = subprocess.run(["bash", f"{root}/scripts/layout.sh", "--resume", "--netlist", netlist, "--top", top, out],
+    r = subprocess.run(["bash", f"{root}/scripts/flows/layout/layout.sh", "--resume", "--netlist", netlist, "--top", top, out],
                        capture_output=True, text=True)
     print(r.stdout[-2000:], r.stderr[-2000:])
     if r.returncode != 0:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""layout_repair: scripts/silicon/layout_repair.py on a routed DEF written here.
+"""layout_repair: scripts/flows/layout/layout_repair.py on a routed DEF written here.
 
 Three NAND3X1 cells of the OSU 0.18 um LEF (3.2 x 10 um; pins A 0.2-0.6 x 4.9-5.7 um,
 B 1.0-1.8 x 4.3-4.7 um, C 1.8-2.2 x 5.9-6.7 um, read off the LEF by hand), U3 flipped

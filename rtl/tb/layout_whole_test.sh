@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# layout_whole_device (long, nightly): scripts/layout.sh lays out the synchronous device
+# layout_whole_device (long, nightly): scripts/flows/layout/layout.sh lays out the synchronous device
 # whole (issue 48): silicon.sh's mapping, placement, routing, DRC, LVS, extraction and
 # post-layout STA. Passes when layout.sh exits 0 (no unrouted net, 0 DRC errors, LVS
 # match) and its summary holds both ROM macros, the mapped netlist's cell count (read here
@@ -8,7 +8,7 @@
 set -euo pipefail
 root="$1"; rom_dir="$2"; scratch="$3"
 rm -rf "$scratch"; mkdir -p "$scratch"
-nice -n 10 bash "$root/scripts/layout.sh" --top specular_device_sync --rom-dir "$rom_dir" "$scratch/layout"
+nice -n 10 bash "$root/scripts/flows/layout/layout.sh" --top specular_device_sync --rom-dir "$rom_dir" "$scratch/layout"
 /usr/bin/python3 - "$scratch/layout" <<'PY'
 import json, re, sys
 out = sys.argv[1]

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""silicon_netlist_assigns: scripts/silicon/netlist_assigns.py on netlists written here.
+"""silicon_netlist_assigns: scripts/flows/synthesis/netlist_assigns.py on netlists written here.
 
 Yosys's concatenated alias assignments, as OpenSTA cannot read them, each become one
 assignment per bit, the highest first (a concatenation lists its most significant item

@@ -36,7 +36,7 @@ endforeach()
 # One more group: every cos code 2^k for k = 1..15 (cos = 2^(k-16) at the default 16
 # fraction bits). ROM 5's zero test and leading-one search see a single set bit at each
 # position of its bus; with none of them here, a zero test blind to one bus bit survived
-# the mutants (docs/testing.md, "Coverage and mutants"). Appended, so the vectors before
+# the mutants (docs/testing/coverage.md, "Coverage and mutants: how strong the suite is"). Appended, so the vectors before
 # it (and the CORRUPT vector 37) are unchanged.
 set(powers_of_two 0.000030517578125 0.00006103515625 0.0001220703125 0.000244140625
                  0.00048828125 0.0009765625 0.001953125 0.00390625 0.0078125 0.015625

@@ -1,6 +1,6 @@
 # rtl_ip_axi_gate_tb: the gate-level AXI testbench of the whole IP
-# (rtl/tb/specular_ip_axi_gate_tb.v, scripts/silicon.sh --top specular_ip_axi) run on the
-# RTL, every MODE: the gate-level replay's own operations (scripts/silicon/gatesim_vectors.py:
+# (rtl/tb/specular_ip_axi_gate_tb.v, scripts/flows/synthesis/silicon.sh --top specular_ip_axi) run on the
+# RTL, every MODE: the gate-level replay's own operations (scripts/flows/gatelevel/gatesim_vectors.py:
 # specular_tb's expected values, Core's bits, of GROUPS edge-case groups of 10 and RANDOM
 # random operations, policy patent/patent/clamp), register reads and writes, idle clocks;
 # each must PASS and report the

@@ -1,4 +1,4 @@
-# silicon_arguments: scripts/silicon.sh and gatesim.sh refuse bad arguments with exit 2
+# silicon_arguments: scripts/flows/synthesis/silicon.sh and gatesim.sh refuse bad arguments with exit 2
 # and a message naming the bad value; --help exits 0.
 include(${CMAKE_CURRENT_LIST_DIR}/silicon_test_support.cmake)  # expect_refusal
 expect_refusal("usage" ${SILICON})

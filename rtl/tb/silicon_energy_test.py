@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""silicon_energy: scripts/silicon/energy.py on netlists small enough to work by hand
-(issue 36, docs/design_space.md "Energy"), through the whole path: the VCD dumper, the
+"""silicon_energy: scripts/flows/energy/energy.py on netlists small enough to work by hand
+(issue 36, docs/design_space/energy_per_result.md "Energy per result"), through the whole path: the VCD dumper, the
 Icarus replay with delays and with zero delay, the VCD-to-toggles step, the energy from
 the Liberty tables, OpenSTA's slews and report_power, the report.
 
@@ -18,7 +18,7 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
   on a, n1 and n2 (one INVX1 input each; y drives nothing);
   leakage 3 x INVX1's cell_leakage_power.
 - wire_cap: the chain with 0.010 pF of wire on n1 and 0.005 pF on n2 (energy.py
-  --wire-cap, the routed wires of scripts/layout.sh): both loads grow by their wire, in
+  --wire-cap, the routed wires of scripts/flows/layout/layout.sh): both loads grow by their wire, in
   the switching energy and in u1's and u2's internal-power lookups; a net the netlist
   lacks is counted as unknown; the wires' own switching (K x 1/2 C_wire V^2 each) is
   wire_switching_pj, and --wire-out lists n1 then n2 with their wire, toggles and share.
@@ -35,9 +35,9 @@ the Liberty tables, OpenSTA's slews and report_power, the report.
   input port's net a, which the test subtracts), its internal energy
   half OpenSTA's (which charges rise_power + fall_power per unit of activity), both with
   OpenSTA's own slews (energy.py sta-slews).
-- rom_monotonic: scripts/silicon/rom_model.py's energy per read grows with the words
+- rom_monotonic: scripts/flows/synthesis/rom_model.py's energy per read grows with the words
   (width fixed) and with the width (words fixed).
-- whole_path: scripts/energy.sh on the drawn device's mapped netlist (silicon_flow's)
+- whole_path: scripts/flows/energy/energy.sh on the drawn device's mapped netlist (silicon_flow's)
   with 4 random operands: 22 results (the common stream's 18 edge cases + 4); the device
   replayed the operands specular_variant_vectors writes for any variant (asked here of
   one_pass, whose model is not the device's) and its testbench expected the pins 24-26
@@ -306,7 +306,7 @@ report_power -digits 8
 
 
 def check_rom_monotonic(energy_py):
-    sys.path.insert(0, os.path.dirname(energy_py))
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(energy_py)), "synthesis"))
     import rom_model
 
     def e(words, width):
@@ -328,8 +328,8 @@ def check_rom_monotonic(energy_py):
 
 
 def check_arguments(energy_py, scratch):
-    """scripts/energy.sh refuses bad arguments with exit 2, naming the value and the range."""
-    script = os.path.join(os.path.dirname(os.path.dirname(energy_py)), "energy.sh")
+    """scripts/flows/energy/energy.sh refuses bad arguments with exit 2, naming the value and the range."""
+    script = os.path.join(os.path.dirname(energy_py), "energy.sh")
     out = os.path.join(scratch, "out")
     for args, text in ((["--period", "0"], "'0' is not a period in ns from 1 to 1000"),
                        (["--period", "abc"], "'abc' is not a period in ns from 1 to 1000"),
@@ -399,9 +399,9 @@ def check_counter(energy_py, osu, scratch, counter):
 
 
 def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb, rom_dir, counter):
-    scripts = os.path.dirname(os.path.dirname(energy_py))
+    scripts = os.path.dirname(os.path.dirname(energy_py))  # scripts/flows
     out = os.path.join(scratch, "energy")
-    r = subprocess.run(["bash", os.path.join(scripts, "energy.sh"), "--top", "specular_device",
+    r = subprocess.run(["bash", os.path.join(scripts, "energy", "energy.sh"), "--top", "specular_device",
                         "--netlist-dir", netlist_dir, "--random", "4", "--vectors-tool", vectors_tool,
                         "--specular-tb", specular_tb, "--counter", counter, "--keep-vcd", out, rom_dir],
                        capture_output=True, text=True)
@@ -444,7 +444,7 @@ def check_whole_path(energy_py, scratch, netlist_dir, vectors_tool, specular_tb,
     fails += same_counts(json.load(open(reader)), cmd, "the device's SDF replay")
     if not cmd["rom_reads"] or min(cmd["rom_reads"].values()) == 0:
         fails.append(f"no ROM read counted: {cmd['rom_reads']}")
-    rows_tsv = [l.split() for l in open(os.path.join(scripts, "silicon", "energy_streams.tsv"))
+    rows_tsv = [l.split() for l in open(os.path.join(scripts, "energy", "energy_streams.tsv"))
                 if l.startswith("specular_device ")]
     if not rows_tsv or e["t_sim_ns"] != float(rows_tsv[0][2]):
         fails.append(f"T_sim {e['t_sim_ns']} is not energy_streams.tsv's {rows_tsv}")

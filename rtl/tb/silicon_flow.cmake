@@ -1,4 +1,4 @@
-# silicon_flow (ctest fixture): scripts/silicon.sh --no-gatesim maps the device onto the
+# silicon_flow (ctest fixture): scripts/flows/synthesis/silicon.sh --no-gatesim maps the device onto the
 # OSU 0.18 um cells and runs OpenSTA once; the silicon_* tests read its folder.
 # TOP: the top module (default specular_device; specular_device_sync for the variant).
 if(NOT TOP)
@@ -9,5 +9,5 @@ execute_process(COMMAND bash ${SILICON} --top ${TOP} --no-gatesim ${OUT} ${ROM_D
                 RESULT_VARIABLE status OUTPUT_VARIABLE log ERROR_VARIABLE log)
 message(STATUS "${log}")
 if(NOT status EQUAL 0)
-  message(FATAL_ERROR "scripts/silicon.sh failed (status ${status})")
+  message(FATAL_ERROR "scripts/flows/synthesis/silicon.sh failed (status ${status})")
 endif()

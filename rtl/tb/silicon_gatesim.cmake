@@ -1,5 +1,5 @@
 # silicon_gatesim_pass_fail: the gate-level simulation is sensitive to timing. With the
-# SDF delays of the mapped device, scripts/gatesim.sh replays the vectors at 1.1 T_sim
+# SDF delays of the mapped device, scripts/flows/gatelevel/gatesim.sh replays the vectors at 1.1 T_sim
 # (every vector must match, exit 0) and at T_sim / 2 (a register or pin must capture too
 # early: exit 1 with a MISMATCH naming it). T_SIM is the figure the bisection measured
 # (docs/silicon.md), not read from this run.

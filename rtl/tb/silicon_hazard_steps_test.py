@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The hazard step of scripts/silicon.sh (issue 35): the cheap checks.
+"""The hazard step of scripts/flows/synthesis/silicon.sh (issue 35): the cheap checks.
 
   silicon_hazard_steps_test.py ROOT SCRATCH CHECK
   CHECK: merge_in_place | skip_note
@@ -40,7 +40,7 @@ def merge_in_place(root, scratch):
                "timing": {"wall_seconds": 0, "cpu_seconds": 0, "host": "test"}}
     path = os.path.join(d, "partial.json")
     json.dump(partial, open(path, "w"))
-    r = subprocess.run(["/usr/bin/python3", os.path.join(root, "scripts/silicon/gatesim_partial.py"),
+    r = subprocess.run(["/usr/bin/python3", os.path.join(root, "scripts/flows/gatelevel/gatesim_partial.py"),
                         "merge", "--output", d, path], capture_output=True, text=True)
     if "SameFileError" in r.stderr or "Traceback" in r.stderr and "shutil" in r.stderr:
         print("FAIL: the merge into its own folder stopped at a copy:\n" + r.stderr[-800:])
@@ -55,7 +55,7 @@ def merge_in_place(root, scratch):
 
 
 def skip_note(root, scratch):
-    silicon = os.path.join(root, "scripts/silicon.sh")
+    silicon = os.path.join(root, "scripts/flows/synthesis/silicon.sh")
     missing_roms = os.path.join(scratch, "no_roms")
     note = "has no hazard probe"
     cases = [(["--top", "specular_exp2"], True), (["--top", "specular_device"], False),

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""silicon_ip_constraints: the SDC of the whole IP (scripts/silicon/specular_ip_axi/
+"""silicon_ip_constraints: the SDC of the whole IP (scripts/flows/designs/specular_ip_axi/
 constraints.tcl) is read by OpenSTA without an error or a warning, at a period, on a
 netlist with the ports of the RTL top (read from rtl/ip/specular_ip_axi.v, not from a
 mapped netlist: quick, no Yosys), and leaves no port out: check_setup names no input
@@ -65,7 +65,7 @@ def main():
     tcl = f"{scratch}/read_sdc.tcl"
     with open(tcl, "w") as f:
         f.write(f"read_liberty {LIB}\nread_verilog {netlist}\nlink_design specular_ip_axi\n"
-                f"source {root}/scripts/silicon/specular_ip_axi/constraints.tcl\n"
+                f"source {root}/scripts/flows/designs/specular_ip_axi/constraints.tcl\n"
                 "constrain 20.0\n"
                 "puts \"clocks: [get_full_name [all_clocks]]\"\n"
                 "check_setup -verbose -unconstrained_endpoints -no_clock -no_input_delay "

@@ -1,4 +1,4 @@
-# silicon_ip_gatesim_pass_fail: the whole IP's gate-level replay (scripts/gatesim.sh --top
+# silicon_ip_gatesim_pass_fail: the whole IP's gate-level replay (scripts/flows/gatelevel/gatesim.sh --top
 # specular_ip_axi, rtl/tb/specular_ip_axi_gate_tb.v: operations, register reads and writes
 # over AXI) is sensitive to timing. With the SDF delays of the mapped IP every access
 # passes at 1.1 T_sim (exit 0, PASS) and at T_sim / 2 one fails (exit 1, a MISMATCH

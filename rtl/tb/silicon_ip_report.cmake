@@ -1,5 +1,5 @@
-# silicon_ip_report: what scripts/silicon.sh writes for the whole IP (specular_ip_axi,
-# docs/silicon.md "The whole IP") is sane: the report with its shares of the area, cell
+# silicon_ip_report: what scripts/flows/synthesis/silicon.sh writes for the whole IP (specular_ip_axi,
+# docs/silicon/ip_tests.md "The whole IP (specular_ip_axi)") is sane: the report with its shares of the area, cell
 # counts above zero, the register block and the device in the mapped netlist by instance
 # name (regs, device: the hierarchy kept), T_sta a number above zero with its worst path
 # named, and OpenSTA's log without an error (a netlist line it could not read).

@@ -1,4 +1,4 @@
-# silicon_report: the report of scripts/silicon.sh is complete: every section, every
+# silicon_report: the report of scripts/flows/synthesis/silicon.sh is complete: every section, every
 # headline figure of silicon_summary.json above zero, ROM 5 a macro of 32 768 x 22 bits
 # (never gates), the logic area the sum of the blocks' areas.
 file(READ ${OUT}/silicon_report.md report)

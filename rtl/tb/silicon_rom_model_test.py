@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""silicon_rom_model: scripts/silicon/rom_model.py makes a macro of every read-only
-memory of a top, by its size (docs/design_space.md, "Silicon flow for variants").
+"""silicon_rom_model: scripts/flows/synthesis/rom_model.py makes a macro of every read-only
+memory of a top, by its size (docs/design_space/flow.md, "Silicon flow for variants").
 
   silicon_rom_model_test.py ROM_MODEL_PY SCRATCH
 

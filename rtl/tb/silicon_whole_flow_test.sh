@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# silicon_whole_flow, silicon_whole_flow_variant (labels long): scripts/silicon.sh OUT as
+# silicon_whole_flow, silicon_whole_flow_variant (labels long): scripts/flows/synthesis/silicon.sh OUT as
 # the README gives it, every step (mapping, STA, the T_sim bisection and its replay, and
 # for the drawn device Fig. 2's hazard sweep, 10-15 minutes), exits 0 with the report
 # (issue 35). A variant (no hazard probe) skips the hazard step with a note in its report.
@@ -10,7 +10,7 @@ root="$1"; rom_dir="$2"; vectors_tool="$3"; scratch="$4"; top="${5:-specular_dev
 rm -rf "$scratch"; mkdir -p "$scratch"
 out="$scratch/out"
 opts=(); [[ "$top" == specular_device ]] || opts=(--top "$top")
-bash "$root/scripts/silicon.sh" "${opts[@]}" --vectors-tool "$vectors_tool" "$out" "$rom_dir" \
+bash "$root/scripts/flows/synthesis/silicon.sh" "${opts[@]}" --vectors-tool "$vectors_tool" "$out" "$rom_dir" \
   > "$scratch/silicon.log" 2>&1
 status=$?
 fail() { echo "FAIL: $1"; tail -n 20 "$scratch/silicon.log"; exit 1; }

@@ -45,7 +45,7 @@ module specular_device_sync_tb;
   wire obs_pass1;
 
 `ifdef GATE_LEVEL
-  // The mapped netlist (scripts/silicon.sh --top specular_device_sync) with the SDF
+  // The mapped netlist (scripts/flows/synthesis/silicon.sh --top specular_device_sync) with the SDF
   // delays; its ROM macros read their images themselves.
   specular_device_sync dut (
 `else

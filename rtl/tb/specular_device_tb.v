@@ -34,7 +34,7 @@ module specular_device_tb;
   parameter real LOAD_SETUP = 0.0;
   // +START_OFFSET=x (-0.5 <= x < 0.5, default 0): start (27) and its data come x periods
   // after the rising clock edge the operation is timed from (negative: before it);
-  // scripts/gatesim.sh --hazards sweeps it across a whole period.
+  // scripts/flows/gatelevel/gatesim.sh --hazards sweeps it across a whole period.
   real start_offset = 0.0;
   initial if ($value$plusargs("START_OFFSET=%f", start_offset) &&
               (start_offset < -0.5 || start_offset >= 0.5))
@@ -68,8 +68,8 @@ module specular_device_tb;
   wire obs_q41, obs_q42, obs_nand45;
 
 `ifdef GATE_LEVEL
-  // The mapped netlist (scripts/silicon.sh, default widths) with the SDF delays; its ROM
-  // macros read their images themselves (scripts/silicon/rom_model.py).
+  // The mapped netlist (scripts/flows/synthesis/silicon.sh, default widths) with the SDF delays; its ROM
+  // macros read their images themselves (scripts/flows/synthesis/rom_model.py).
   specular_device dut (
 `else
   specular_device #(
@@ -163,7 +163,7 @@ module specular_device_tb;
   endtask
 
   // The widths derived above are the device's. (A mapped netlist has no parameters
-  // left: scripts/silicon.sh maps the default widths, which the defaults above are.)
+  // left: scripts/flows/synthesis/silicon.sh maps the default widths, which the defaults above are.)
   task check_widths;
   begin  // (a Verilog-2005 task may not be empty, as it is at gate level)
 `ifndef GATE_LEVEL

@@ -1,17 +1,17 @@
-// Gate-level testbench of the whole IP, specular_ip_axi (scripts/silicon.sh --top
-// specular_ip_axi, scripts/gatesim.sh, scripts/energy_ip.sh; docs/silicon.md): an
+// Gate-level testbench of the whole IP, specular_ip_axi (scripts/flows/synthesis/silicon.sh --top
+// specular_ip_axi, scripts/flows/gatelevel/gatesim.sh, scripts/flows/energy/energy_ip.sh; docs/silicon.md): an
 // AXI4-Lite master on a clock of period T that drives the mapped netlist with the SDF
 // (`define GATE_LEVEL) or the RTL, and checks every response. Its own file, beside
 // specular_ip_axi_tb.v (the RTL tests' master, with random stalls and a fixed clock):
 // here the master keeps the bus's timing of the top's SDC
-// (scripts/silicon/specular_ip_axi/constraints.tcl):
+// (scripts/flows/designs/specular_ip_axi/constraints.tcl):
 //   - inputs change at the falling edge of aclk, half a period before the rising edge that
 //     takes them (the SDC's input delay T/2);
 //   - outputs are read just before the next rising edge (T/64 before it: the SDC's output
 //     delay 0, one period);
 //   - READY for B and R is held high, AW and W go together: the bus's quickest master.
 // MODE picks what it runs, for the T_sim bisection (3) and for the energy of each kind of
-// access (scripts/energy_ip.sh, 0-2, 4); `PHASE_BEGIN_NS` in the log is when the measured
+// access (scripts/flows/energy/energy_ip.sh, 0-2, 4); `PHASE_BEGIN_NS` in the log is when the measured
 // part starts (in MODE 0 before operation MEASURE_FROM: energy_ip.sh skips the stream's
 // edge cases), and the run ends as its last access ends:
 //   0 operations: per vector of VECTORS (specular_tb --format csv: Core's bits) N, R, G,

@@ -1,4 +1,4 @@
-// specular_policy_parameters.vh: the parameters scripts/gatesim.sh and rtl/tb/run_icarus.cmake
+// specular_policy_parameters.vh: the parameters scripts/flows/gatelevel/gatesim.sh and rtl/tb/run_icarus.cmake
 // give every bench of a device top (specular_device_tb.v, specular_device_sync_tb.v,
 // specular_ip_axi_gate_tb.v): the vectors, the ROM images, and the policy as the twin's
 // wrapper ties it. `include it first inside the bench module.

@@ -1,6 +1,6 @@
 // Self-checking testbench of any design variant's top behind the common ports
-// (docs/design_space.md, "Conventions"), in RTL (Icarus) and at gate level with the SDF
-// (scripts/gatesim.sh, `define GATE_LEVEL). One testbench for every variant: the top's
+// (docs/design_space/flow.md, "Conventions (every variant follows them)"), in RTL (Icarus) and at gate level with the SDF
+// (scripts/flows/gatelevel/gatesim.sh, `define GATE_LEVEL). One testbench for every variant: the top's
 // module name is the macro VARIANT_TOP (-DVARIANT_TOP=specular_NAME).
 //
 // VECTORS: one operation per line, hex: cos n r g b lobe out_r out_g out_b (the expected

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""layout_spef_fix: scripts/silicon/spef_fix.py on a SPEF written by hand in rc2dly's
-dialect (issue 48, docs/silicon.md "Layout"), against a flat netlist as qflow's
+"""layout_spef_fix: scripts/flows/layout/spef_fix.py on a SPEF written by hand in rc2dly's
+dialect (issue 48, docs/silicon/layout.md "Layout: placed, routed, DRC and LVS checked"), against a flat netlist as qflow's
 blif2Verilog writes it. Every expectation is spelled here, from the two dialects:
 
 - dff41.d (a BLIF net through a block) becomes dff41_d, the netlist's spelling;

@@ -1,9 +1,9 @@
-# rtl_synth_report: scripts/synth.sh runs Yosys on the device and its report must be
+# rtl_synth_report: scripts/flows/synthesis/synth.sh runs Yosys on the device and its report must be
 # complete: every section present, and every summary figure a number above zero.
 file(REMOVE_RECURSE ${SCRATCH})
 execute_process(COMMAND bash ${SYNTH} ${SCRATCH} ${ROM_DIR} RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
-  message(FATAL_ERROR "scripts/synth.sh failed (status ${status})")
+  message(FATAL_ERROR "scripts/flows/synthesis/synth.sh failed (status ${status})")
 endif()
 file(READ ${SCRATCH}/synth_report.md report)
 foreach(section "## Cells per block (hierarchical)" "## Flip-flops" "## ROMs"

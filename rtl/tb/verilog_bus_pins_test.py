@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""layout_verilog_bus_pins: scripts/silicon/verilog_bus_pins.py on a netlist written here in
+"""layout_verilog_bus_pins: scripts/flows/layout/verilog_bus_pins.py on a netlist written here in
 blif2Verilog's dialect, then compiled and run by Icarus.
 
 The netlist plants what qflow 1.3.17 wrote on the laid-out designs:

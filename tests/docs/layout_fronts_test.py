@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""scripts/layout_fronts.py (issue 48): the Pareto column of the table after layout is
+"""scripts/flows/design_space/layout_fronts.py (issue 48): the Pareto column of the table after layout is
 checked against the fronts its own figures give.
 
   layout_fronts_test.py PROJECT_DIR SCRATCH made-up   # four made-up designs
@@ -50,7 +50,7 @@ def table(marks, override=None):
 
 
 def run(project, path, *args):
-    return subprocess.run([sys.executable, os.path.join(project, "scripts", "layout_fronts.py"), path, *args],
+    return subprocess.run([sys.executable, os.path.join(project, "scripts", "flows", "design_space", "layout_fronts.py"), path, *args],
                           capture_output=True, text=True)
 
 

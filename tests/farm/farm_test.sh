@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The farm through real Slurm (issue 25; ctest label "farm"): starts a single-node
-# cluster (scripts/slurm_cluster.sh) in a scratch folder, submits the smoke regression
-# with sbatch (scripts/farm.sh), and checks
+# cluster (scripts/farm/slurm_cluster.sh) in a scratch folder, submits the smoke regression
+# with sbatch (scripts/farm/farm.sh), and checks
 #   1. every merged result equals the unsharded run's, bit for bit: specular_prove's
 #      report whole; specular_tb's summary text and its partial's summary (every maximum,
 #      its place, the counts, the results' checksum);
@@ -19,8 +19,8 @@ set -euo pipefail
 build=$(cd "$1" && pwd)
 executor=${2:-slurm}
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-farm="$root/scripts/farm.sh"
-cluster="$root/scripts/slurm_cluster.sh"
+farm="$root/scripts/farm/farm.sh"
+cluster="$root/scripts/farm/slurm_cluster.sh"
 
 if [[ $executor == slurm ]] && { ((EUID != 0)) || [[ ! -x /usr/sbin/slurmctld || ! -x /usr/sbin/munged ]]; }; then
   echo "farm_test.sh: SKIP: needs root and the packages slurm-wlm and munge (scripts/setup.sh)"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The gate-level regression sharded (issue 25): scripts/gatesim.sh --shard I/N --partial F
+# The gate-level regression sharded (issue 25): scripts/flows/gatelevel/gatesim.sh --shard I/N --partial F
 # over two policies at T_sim / 2 (each fails: a register or pin captures too early), the
 # unsharded run and 3 shards (one policy, the other, none); the merge of the 3 partials
 # must give the unsharded run's verdict, exit status and summary (every policy's verdict,

@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# scripts/variant_job.py --merge (issue 26): the farm's merge of a variant's RTL-proof
+# scripts/farm/variant_job.py --merge (issue 26): the farm's merge of a variant's RTL-proof
 # and silicon tasks takes one complete set of passed shards and refuses anything else,
 # naming the shard or file: a missing shard, a duplicate, other settings, a failed shard.
 # Partials are written here by hand (no build needed). Also farm.sh's layout regression's
 # task list (issue 48).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-job=("python3" "$root/scripts/variant_job.py")
+job=("python3" "$root/scripts/farm/variant_job.py")
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/variant_job_test.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
 fail() { echo "variant_job_merge_test.sh: FAIL: $*" >&2; exit 1; }
@@ -46,7 +46,7 @@ expect 2 "--no-cleanup is an option of layout, not of silicon" "${job[@]}" silic
 mkdir -p "$scratch/build/tools/variant_error"
 printf '#!/bin/sh\necho exp2 one_pass one_pass_pipelined schlick us5739820\n' >"$scratch/build/tools/variant_error/specular_variant_error"
 chmod +x "$scratch/build/tools/variant_error/specular_variant_error"
-diff <(bash "$root/scripts/farm.sh" list layout --build "$scratch/build") - <<'EOF' || fail "farm.sh list layout: not one layout task per design"
+diff <(bash "$root/scripts/farm/farm.sh" list layout --build "$scratch/build") - <<'EOF' || fail "farm.sh list layout: not one layout task per design"
 0	layout_device	variant_job	layout device --shard 0/1
 1	layout_device_sync	variant_job	layout device_sync --shard 0/1
 2	layout_exp2	variant_job	layout exp2 --shard 0/1
@@ -57,7 +57,7 @@ diff <(bash "$root/scripts/farm.sh" list layout --build "$scratch/build") - <<'E
 EOF
 # farm.sh's mutants regression (issue 46): the whole IP's two targets, 2 shards of 100 each,
 # after the device's groups.
-diff <(bash "$root/scripts/farm.sh" list mutants --build "$scratch/build" | grep -P '\trtl_mutants_specular_(reg_block|ip_axi)\t') - <<'EOF' || fail "farm.sh list mutants: not 2 shards per IP target"
+diff <(bash "$root/scripts/farm/farm.sh" list mutants --build "$scratch/build" | grep -P '\trtl_mutants_specular_(reg_block|ip_axi)\t') - <<'EOF' || fail "farm.sh list mutants: not 2 shards per IP target"
 18	rtl_mutants_specular_reg_block	rtl_mutants	--target specular_reg_block --count 100 --seed 1 --shard 0/2
 19	rtl_mutants_specular_reg_block	rtl_mutants	--target specular_reg_block --count 100 --seed 1 --shard 1/2
 20	rtl_mutants_specular_ip_axi	rtl_mutants	--target specular_ip_axi --count 100 --seed 1 --shard 0/2

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The RTL coverage summariser (scripts/rtl_coverage.py summary) on a small coverage file
+"""The RTL coverage summariser (scripts/verify/rtl_coverage.py summary) on a small coverage file
 written here point by point, with its figures counted by hand (issue 37): per design the
 line points (v_line and v_branch) and toggle points hit / total, every unhit point listed,
 an exclusion that covers a point, and exit 1 while a point is neither hit nor excluded.
@@ -10,7 +10,7 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-SCRIPT = os.path.join(ROOT, "scripts", "rtl_coverage.py")
+SCRIPT = os.path.join(ROOT, "scripts", "verify", "rtl_coverage.py")
 
 
 def point(page, hier, comment, line, count, file="rtl/device/x.v"):

@@ -1,5 +1,5 @@
 // A SystemC program with one leak planted in our own code, and one allocation that only
-// the main thread's stack holds when exit() runs. scripts/sanitizer_exit_check.sh runs it
+// the main thread's stack holds when exit() runs. scripts/verify/sanitizer_exit_check.sh runs it
 // under the sanitizer settings and `setarch -R` and asks LeakSanitizer's report for:
 //   - the planted leak, allocated on an SC_THREAD's coroutine stack: reported, so leak
 //     detection still sees our code's leaks (issue 45);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# scripts/sanitizer_failures.py on a real ctest JUnit file (issue 45): a scratch project
+# scripts/verify/sanitizer_failures.py on a real ctest JUnit file (issue 45): a scratch project
 # whose tests fail the way sanitizer runs fail (each class once, two of them twice; a timeout is an
 # ordinary failure) and pass; the
 # summary must count each class as planted, name the failed tests and exit 1; a run
@@ -34,7 +34,7 @@ ctest --test-dir "$scratch/build" -j2 --output-junit "$scratch/junit.xml" >/dev/
   fail "the planted ctest run passed"
 
 status=0
-python3 "$root/scripts/sanitizer_failures.py" --junit "$scratch/junit.xml" >"$scratch/summary" || status=$?
+python3 "$root/scripts/verify/sanitizer_failures.py" --junit "$scratch/junit.xml" >"$scratch/summary" || status=$?
 cat "$scratch/summary"
 [ "$status" -eq 1 ] || fail "exit $status on failures, expected 1"
 expected="7 of 8 tests failed: 2 sanitizer fatal error, 1 leak, 1 memory error, 1 undefined behaviour, 2 test failure"
@@ -47,7 +47,7 @@ grep -q "passes" "$scratch/summary" && fail "a passed test is named"
 
 # Nothing failed: exit 0.
 ctest --test-dir "$scratch/build" -R '^passes$' --output-junit "$scratch/pass.xml" >/dev/null
-python3 "$root/scripts/sanitizer_failures.py" --junit "$scratch/pass.xml" >"$scratch/pass" ||
+python3 "$root/scripts/verify/sanitizer_failures.py" --junit "$scratch/pass.xml" >"$scratch/pass" ||
   fail "exit non-zero when nothing failed"
 grep -qF "none of 1 tests failed" "$scratch/pass" || fail "no 'none of 1 tests failed' line"
 
@@ -55,7 +55,7 @@ grep -qF "none of 1 tests failed" "$scratch/pass" || fail "no 'none of 1 tests f
 printf 'Tracer caught signal 11\n' >"$scratch/a.log"
 printf 'ERROR: LeakSanitizer: detected memory leaks\n' >"$scratch/b.log"
 status=0
-python3 "$root/scripts/sanitizer_failures.py" --logs "$scratch/a.log" "$scratch/b.log" >"$scratch/logs" || status=$?
+python3 "$root/scripts/verify/sanitizer_failures.py" --logs "$scratch/a.log" "$scratch/b.log" >"$scratch/logs" || status=$?
 [ "$status" -eq 1 ] || fail "--logs exit $status, expected 1"
 grep -qF "2 runs failed: 1 sanitizer fatal error, 1 leak" "$scratch/logs" || fail "--logs summary wrong"
 echo "sanitizer_failures_test: passed"

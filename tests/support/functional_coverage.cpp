@@ -1,6 +1,6 @@
 // The functional coverage bins (issue 37), declared here and nowhere else, and the
 // recorder the test support code calls (functional_coverage.h says how hits travel from
-// the many test processes to scripts/functional_coverage.py's report).
+// the many test processes to scripts/verify/functional_coverage.py's report).
 #include "functional_coverage.h"
 
 #include <unistd.h>

@@ -4,7 +4,7 @@
 // records hits through the functions below. Recording is off unless the environment
 // variable SPECULAR_FUNCTIONAL_COVERAGE names a folder: then each test process writes its
 // hits at exit to a file of its own there (fcov-<pid>-<random>.tsv, "group/bin<TAB>count"),
-// and scripts/functional_coverage.py sums every process's file into the report, failing on
+// and scripts/verify/functional_coverage.py sums every process's file into the report, failing on
 // an unhit bin. Unset, every function returns after one cached test: no cost to the suite.
 #pragma once
 

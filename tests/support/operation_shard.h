@@ -10,7 +10,7 @@
 // shard I/N for the tests declared operation-sharded (SPECULAR_OPERATION_SHARDED_SUITE,
 // which run in every shard process on their slice of n) and gives every other test to
 // exactly one shard process (plan_gtest_shards below), so the N processes together run
-// exactly what the unsharded run runs. docs/testing.md, "Sharding under GoogleTest".
+// exactly what the unsharded run runs. docs/testing/isolation.md, "Sharding under GoogleTest".
 #pragma once
 
 #include <gtest/gtest.h>

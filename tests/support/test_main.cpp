@@ -68,7 +68,7 @@ int take_over_gtest_sharding() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Every functional coverage bin, for scripts/functional_coverage.py (issue 37).
+  // Every functional coverage bin, for scripts/verify/functional_coverage.py (issue 37).
   if (argc == 2 && std::string(argv[1]) == "--specular-list-functional-bins") {
     for (const auto& bin : specular::testing_support::coverage::all_bins())
       std::cout << bin.name << '\t' << bin.what << '\t' << bin.ignore << '\n';

@@ -95,18 +95,18 @@ def table_from(text):
 
 def calibration_current(tool, scratch, src):
     header = os.path.join(scratch, "calibration.h")
-    run([sys.executable, os.path.join(src, "scripts", "energy_model", "fit.py"), "--features-tool", tool,
+    run([sys.executable, os.path.join(src, "scripts", "flows", "energy", "model", "fit.py"), "--features-tool", tool,
          "--header", header, "--work", scratch])
     committed = os.path.join(src, "modules", "include", "specular", "energy", "calibration.h")
     if open(header).read() != open(committed).read():
         diff = subprocess.run(["diff", committed, header], capture_output=True, text=True).stdout
         raise SystemExit(f"FAIL: {committed} is not what fit.py makes from the committed data "
-                         f"(scripts/energy_model/fit.py --header ...):\n{diff}")
+                         f"(scripts/flows/energy/model/fit.py --header ...):\n{diff}")
     print("PASS: calibration.h is fit.py's output on the committed data")
 
 
 def accuracy(tool, scratch, src):
-    data = os.path.join(src, "scripts", "energy_model", "data")
+    data = os.path.join(src, "scripts", "flows", "energy", "model", "data")
     streams = sorted(f[:-4] for f in os.listdir(os.path.join(data, "streams")) if f.startswith("test_"))
     if len(streams) < 3:
         raise SystemExit(f"FAIL: {len(streams)} test streams, expected at least 3")

@@ -1,7 +1,7 @@
 // specular_energy_features: the energy model's features of each operation of an operand
 // stream (issue 61, docs/energy/calibration.md), computed by the C++ the model itself
 // charges with (specular::energy::operation_features), so that the fit
-// (scripts/energy_model/fit.py) and the model cannot differ.
+// (scripts/flows/energy/model/fit.py) and the model cannot differ.
 //
 //   specular_energy_features [--model] STREAM [OUT]
 //

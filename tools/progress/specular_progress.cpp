@@ -1,6 +1,6 @@
 // specular_progress DONE TOTAL SECONDS [UNIT [LABEL]]: prints progress_line() (progress.h)
 // on standard output, for scripts whose long runs report progress the way specular_tb
-// does (scripts/gatesim.sh; the script decides whether standard error is a terminal).
+// does (scripts/flows/gatelevel/gatesim.sh; the script decides whether standard error is a terminal).
 // Exit 2 with a message naming the bad value and the allowed range (cli.h).
 #include <cstdint>
 #include <iostream>

@@ -1,6 +1,6 @@
 // specular_study: measures the patent's two claims — that 1 − ½·log2(1 − n·log2 cos λ)
 // approximates cos^n λ, and that 2π/(n+2) conserves energy — next to the alternatives,
-// and justifies the fixed-point widths. Writes CSV files; scripts/plot_study.py draws
+// and justifies the fixed-point widths. Writes CSV files; scripts/flows/design_space/plot_study.py draws
 // them; docs/study.md reads them. Progress goes to stderr, a summary to stdout and to
 // <out>/summary.txt.
 //
@@ -314,7 +314,7 @@ int run_study(const StudyOptions& options) {
 
 int main(int argc, char** argv) {
   CLI::App app{"Measures the device's approximation of cos^n, its energy integrals and its fixed-point\n"
-               "widths, and writes CSV files for scripts/plot_study.py.\n"
+               "widths, and writes CSV files for scripts/flows/design_space/plot_study.py.\n"
                "  specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--shard I/N] [--partial FILE]\n"
                "  specular_study --merge PARTIAL... [--out DIR]",
                "specular_study"};

@@ -1,5 +1,5 @@
 // specular_variant_vectors: the vector file of rtl/tb/specular_variant_tb.v for one
-// design variant (docs/design_space.md, "Silicon flow for variants"): one operation per
+// design variant (docs/design_space/flow.md, "Silicon flow for variants"): one operation per
 // line, in hex, `cos n r g b lobe out_r out_g out_b`, the expected lobe (S10.20, 31 bits)
 // and pins 24-26 (S18.13, 32 bits) computed by the variant's C++ model (make_variant),
 // which its Verilog top equals to the bit (test_variant_rtl_NAME).

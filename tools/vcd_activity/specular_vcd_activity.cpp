@@ -1,4 +1,4 @@
-// specular_vcd_activity MAP VCD OUT: the toggle counter of scripts/silicon/energy.py
+// specular_vcd_activity MAP VCD OUT: the toggle counter of scripts/flows/energy/energy.py
 // (issue 36, docs/energy.md) for VCDs of hundreds of MB, where the Python reader spends
 // as long as the gate-level replay that wrote them. The same rules as energy.py's
 // read_vcd, which stays the reference (tests/silicon_energy_counter compares the two):
@@ -320,7 +320,7 @@ int count_activity(const std::string& map_path, const std::string& vcd_path, con
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"The toggle counter of scripts/silicon/energy.py for large VCDs (docs/energy.md).",
+    CLI::App app{"The toggle counter of scripts/flows/energy/energy.py for large VCDs (docs/energy.md).",
                  "specular_vcd_activity"};
     specular::cli::house_rules(app, "Exit status: 0 written, 1 a file unreadable or malformed (named with "
                                     "the line), 2 usage.");

@@ -1,5 +1,5 @@
 // Verilator's line and toggle coverage of a verilated model, saved for the RTL coverage
-// report (issue 37, scripts/rtl_coverage.sh, docs/testing.md "Toggle and line coverage of
+// report (issue 37, scripts/verify/rtl_coverage.sh, docs/testing/code_coverage.md "Toggle and line coverage of
 // the RTL"). Why here and not at Verilator's own exit hook: every model of the twins and
 // variants owns its VerilatedContext, and a context's coverage points are pointers into
 // its model's counters, so they must be read while the model lives. An RtlCoverageScope

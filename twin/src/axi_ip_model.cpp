@@ -62,7 +62,7 @@ class AxiIpModel::Impl {
       const bool b_valid = top_.s_axi_bvalid;
       const bool b_fire = b_valid && top_.s_axi_bready;
       const std::uint32_t resp = top_.s_axi_bresp;
-      // The slave's side of the handshake, checked every cycle (docs/rtl_ip.md, "Proof").
+      // The slave's side of the handshake, checked every cycle (docs/rtl_ip.md, "The protocol proven").
       if (b_valid && !(aw_taken && w_taken)) violation("AXI4-Lite: B before its AW and W were taken");
       if (b_waiting && !b_valid) violation("AXI4-Lite: BVALID dropped before BREADY");
       if (b_waiting && b_valid && resp != b_seen) violation("AXI4-Lite: BRESP changed while BVALID waited");

@@ -1,4 +1,4 @@
-// A verilated design variant (rtl/design_space/specular_NAME.v, docs/design_space.md "Conventions")
+// A verilated design variant (rtl/design_space/specular_NAME.v, docs/design_space/flow.md "Conventions (every variant follows them)")
 // driven through the variants' common ports: operations streamed in, a start on every
 // clock the top is ready, results collected in order as valid rises. One template for
 // every variant: their ports are the same.

@@ -4,7 +4,7 @@
 /// CMOS spends its dynamic energy on toggles, and the toggles of an operation follow
 /// from how far its register and bus values lie from the previous operation's: the
 /// Hamming distances below. They are the features the energy model is fitted on
-/// (scripts/energy_model/fit.py) and evaluated with (operation_energy.h): written once,
+/// (scripts/flows/energy/model/fit.py) and evaluated with (operation_energy.h): written once,
 /// here, so the fit and the model cannot compute them differently.
 #pragma once
 

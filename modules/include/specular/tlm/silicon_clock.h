@@ -1,7 +1,7 @@
 /// \file
 /// The device's clock period in silicon, for the TLM targets' latency annotation: an SoC
 /// simulation that wants real nanoseconds constructs a target with osu018_clock_period()
-/// (docs/silicon.md, "The TLM targets in real nanoseconds").
+/// (docs/silicon/ip_tests.md, "The TLM targets in real nanoseconds").
 #pragma once
 
 #include <systemc>
@@ -9,8 +9,8 @@
 namespace specular {
 
 /// Clock period of specular_device mapped onto the OSU 0.18 um standard cells, in ns.
-/// Derived from T_sta = 37.18 ns (scripts/silicon.sh: OpenSTA 2.0.17, osu018_stdcells.lib
-/// typical corner 1.8 V 25 C, the ROM macros of scripts/silicon/rom_model.py): the worst
+/// Derived from T_sta = 37.18 ns (scripts/flows/synthesis/silicon.sh: OpenSTA 2.0.17, osu018_stdcells.lib
+/// typical corner 1.8 V 25 C, the ROM macros of scripts/flows/synthesis/rom_model.py): the worst
 /// path is pass 2's, from flip-flop 43 (select 36, clocked on the falling edge through
 /// inverter 44) through multiplexer 3, ROM 5, multiplier 6, inverter 7 and adder 8 into
 /// register 9, 19.4 ns that must fit in half a period. Rounded up to the next 0.5 ns:

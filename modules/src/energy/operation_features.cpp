@@ -92,28 +92,6 @@ const arith::Rom5Table& shared_rom5(const Formats& f) {
   return *tables.back().second;
 }
 
-}  // namespace
-
-/// What one operation's registers give: ROM 5's reads and multiplier 6's products on
-/// register 1 (Fig. 2 between operations), register 9's passes (the passes written),
-/// multiplier 39 on pass 1, and the features of its last step (pass 2 written, select 36
-/// falling), which the next operation counts again as its "previous" step.
-struct FeatureStream::Settled {
-  RegisterState regs;
-  code_t log_cos = 0, rom5_cos = 0, n_operand = 0;      // ROM 5 on register 1, multiplexer 4 on n
-  code_t log_pass1 = 0, mul6_pass1 = 0, mul39_pass1 = 0;  // register 9's pass 1
-  code_t log_pass2 = 0, rom5_pass2 = 0, mul6_pass2 = 0;   // register 9's pass 2
-  // Pass 2 written: ROM 5's read, the log2 unit's and multiplier 6's (on h) toggles,
-  // multiplier 39's and multipliers 13-15's activity as 39 settles on the result.
-  // (Activities in eighths.)
-  int end_rom5_read = 0, end_log2 = 0, end_mul6 = 0, end_mul39_activity8 = 0, end_mul_rgb_activity8 = 0;
-  // Select 36 falls: ROM 5's bus from pass 2 back to register 1, multiplier 6's second
-  // operand from h back to n.
-  int return_rom5_read = 0, return_mul6_activity8 = 0;
-};
-
-namespace {
-
 using Settled = FeatureStream::Settled;
 
 template <class FormatSet>
@@ -243,17 +221,13 @@ FeatureStream::FeatureStream(const Formats& formats)
     : formats_(formats),
       default_formats_(has_default_formats(formats)),
       pin19_h_(pin19_code(formats, Constants::patent)),
-      rom5_(&shared_rom5(formats)),
-      settled_(std::make_unique<std::array<Settled, 2>>()) {
+      rom5_(&shared_rom5(formats)) {
   restart_from(reset_state());
 }
-FeatureStream::~FeatureStream() = default;
-FeatureStream::FeatureStream(FeatureStream&&) noexcept = default;
-FeatureStream& FeatureStream::operator=(FeatureStream&&) noexcept = default;
 
 Features FeatureStream::next(const Operands& in, const Result& r) {
-  const Settled& last = (*settled_)[last_];
-  Settled& next = (*settled_)[1 - last_];
+  const Settled& last = settled_[last_];
+  Settled& next = settled_[1 - last_];
   const RegisterState s{in, r};
   Features x;
   if (default_formats_) step_default(last, next, s, *rom5_, pin19_h_, x);
@@ -263,7 +237,7 @@ Features FeatureStream::next(const Operands& in, const Result& r) {
 }
 
 void FeatureStream::restart_from(const RegisterState& registers) {
-  (*settled_)[last_] = settle_any(formats_, default_formats_, *rom5_, pin19_h_, registers);
+  settled_[last_] = settle_any(formats_, default_formats_, *rom5_, pin19_h_, registers);
 }
 
 Features operation_features(const Formats& f, const RegisterState& before, const RegisterState& after) {

@@ -10,7 +10,6 @@
 
 #include <array>
 #include <cstddef>
-#include <memory>
 
 #include "specular/core.h"
 
@@ -55,9 +54,6 @@ class FeatureStream {
  public:
   /// A stream starting from reset_state(), for a device whose buses have `formats`.
   explicit FeatureStream(const Formats& formats);
-  ~FeatureStream();
-  FeatureStream(FeatureStream&&) noexcept;
-  FeatureStream& operator=(FeatureStream&&) noexcept;
 
   /// The features of the operation that leaves the registers at `in` and `r` (Core::run's
   /// result for `in`), counted from the previous call's registers.
@@ -65,16 +61,38 @@ class FeatureStream {
   /// The registers the next operation counts from: `registers` (reset_state() after a reset).
   void restart_from(const RegisterState& registers);
 
-  /// What one operation's registers give, kept for the next operation (operation_features.cpp).
-  struct Settled;
+  /// What one operation's registers give, kept for the next operation: ROM 5's reads and
+  /// multiplier 6's products on register 1 (Fig. 2 between operations) and on register
+  /// 9's passes, multiplier 39 on pass 1, and the counts of its last step (pass 2
+  /// written, select 36 falling), which the next operation counts again as its
+  /// "previous" step. Counts are integers, activities in eighths (operation_features.cpp).
+  struct Settled {
+    RegisterState regs;  ///< the operation's registers
+    code_t log_cos = 0;      ///< ROM 5 on register 1's cos
+    code_t rom5_cos = 0;     ///< ROM 5's address for it
+    code_t n_operand = 0;    ///< multiplexer 4 on register 2 (n)
+    code_t log_pass1 = 0;    ///< ROM 5 on register 9's pass 1
+    code_t mul6_pass1 = 0;   ///< multiplier 6: that times h
+    code_t mul39_pass1 = 0;  ///< multiplier 39: pass 1 times K
+    code_t log_pass2 = 0;    ///< ROM 5 on register 9's pass 2
+    code_t rom5_pass2 = 0;   ///< ROM 5's address for it
+    code_t mul6_pass2 = 0;   ///< multiplier 6: that times h
+    int end_rom5_read = 0;          ///< pass 2 written: ROM 5 reads a new word (1) or not
+    int end_log2 = 0;               ///< the log2 unit's toggles
+    int end_mul6 = 0;               ///< multiplier 6's toggles (on h)
+    int end_mul39_activity8 = 0;    ///< multiplier 39's activity, in eighths
+    int end_mul_rgb_activity8 = 0;  ///< multipliers 13-15's, in eighths
+    int return_rom5_read = 0;       ///< select 36 falls: ROM 5 back on register 1 reads anew
+    int return_mul6_activity8 = 0;  ///< multiplier 6's operands back to (cos, n), in eighths
+  };
 
  private:
   Formats formats_;
   bool default_formats_;
   code_t pin19_h_;
-  const arith::Rom5Table* rom5_;    ///< shared by every stream of the same widths
+  const arith::Rom5Table* rom5_;  ///< shared by every stream of the same widths
   /// The previous operation's and the one being computed, in turn (no copy per operation).
-  std::unique_ptr<std::array<Settled, 2>> settled_;
+  std::array<Settled, 2> settled_{};
   int last_ = 0;  ///< which of settled_ is the previous operation's
 };
 

@@ -562,8 +562,16 @@ TEST(SocPlatformCommandLine, BadArgumentsAreNamedWithTheAllowedValues) {
       << outcome.err;
   outcome = testing_support::run_command("'" + exe + "' --operations 0", dir);
   EXPECT_EQ(outcome.status, 2);
-  EXPECT_NE(outcome.err.find("--operations '0' is not a whole number in 1..100000"), std::string::npos)
+  EXPECT_NE(outcome.err.find("--operations: '0' is not a whole number in 1..100000"), std::string::npos)
       << outcome.err;
+  outcome = testing_support::run_command("'" + exe + "' --operations 12x", dir);
+  EXPECT_EQ(outcome.status, 2);
+  EXPECT_NE(outcome.err.find("--operations: '12x' is not a whole number in 1..100000"), std::string::npos)
+      << outcome.err;
+  outcome = testing_support::run_command("'" + exe + "' --help", dir);  // CLI11's, from the declarations
+  EXPECT_EQ(outcome.status, 0);
+  for (const char* option : {"--target", "--operations", "--strict", "--pin-delay", "--version"})
+    EXPECT_NE(outcome.out.find(option), std::string::npos) << option << " missing from\n" << outcome.out;
   outcome = testing_support::run_command("'" + exe + "' --target pin --pin-delay sideways", dir);
   EXPECT_EQ(outcome.status, 2);
   EXPECT_NE(outcome.err.find("--pin-delay: pin delay policy 'sideways' is not one of: keep, consume"),

@@ -3,11 +3,13 @@
 // bus, and the frame buffer is written as a binary PPM (P6).
 //
 //   specular_vp --out FILE.ppm [--size N] [--policy patent|energy|none]
-//               [--constants patent|minimax-half|minimax]
+//               [--constants patent|minimax-half|minimax]      (--help: what each does)
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -20,17 +22,6 @@ using namespace specular::vp;
 
 constexpr int exit_usage = 2;
 
-const char* usage =
-    "usage: specular_vp --out FILE.ppm [--size N] [--policy patent|energy|none]\n"
-    "                   [--constants patent|minimax-half|minimax]\n"
-    "  --out FILE      the image: 4 panels of N x N pixels side by side, binary PPM (P6)\n"
-    "  --size N        panel size in pixels, 16..1024 (default 256)\n"
-    "  --policy P      the IP's ROM 38 contents (default none: K = 1, so every panel's\n"
-    "                  highlight peaks at the light's intensity; patent: 2pi/(n+2),\n"
-    "                  whose n = 1000 highlight is nearly black; energy: (n+2)/(2pi))\n"
-    "  --constants C   the IP's pins 19 (h), 20 (a) and ROM 38's scale s (default\n"
-    "                  patent: 1/2, 1, 1; minimax-half, minimax: docs/study.md)\n";
-
 struct Arguments {
   std::string out;
   int size = 256;
@@ -38,48 +29,63 @@ struct Arguments {
   Constants constants = Constants::patent;
 };
 
-[[noreturn]] void usage_error(const std::string& message) {
-  std::cerr << "specular_vp: error: " << message << "\n" << usage;
-  std::exit(exit_usage);
-}
-
+/// The command line, declared once with CLI11 (as the project's tools): --help from the
+/// declarations, a bad value one line naming it and the allowed values, exit status 2.
 Arguments parse(int argc, char** argv) {
   Arguments a;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    if (option == "--help") {
-      std::cout << usage;
-      std::exit(0);
-    }
-    if (option != "--out" && option != "--size" && option != "--policy" && option != "--constants")
-      usage_error("unknown option '" + option + "'");
-    if (i + 1 >= argc) usage_error(option + " needs a value");
-    const std::string value = argv[++i];
-    if (option == "--out") {
-      a.out = value;
-    } else if (option == "--size") {
-      char* end = nullptr;
-      const long size = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || size < 16 || size > 1024)
-        usage_error("--size = '" + value + "' is not an integer in [16, 1024]");
-      a.size = static_cast<int>(size);
-    } else if (option == "--constants") {
-      try {
-        a.constants = parse_constants(value);
-      } catch (const std::invalid_argument& e) {
-        usage_error(std::string("--constants: ") + e.what());
-      }
-    } else if (value == "patent") {
-      a.policy = Normalisation::patent;
-    } else if (value == "energy") {
-      a.policy = Normalisation::energy;
-    } else if (value == "none") {
-      a.policy = Normalisation::none;
-    } else {
-      usage_error("--policy = '" + value + "' is not one of: patent, energy, none");
-    }
+  CLI::App app{"The example virtual platform: a CPU renders a sphere's specular highlight for n = 1, 10, "
+               "100, 1000 side by side through the specular IP over a bus, and writes the frame buffer "
+               "as a binary PPM (P6).",
+               "specular_vp"};
+  app.set_version_flag("--version", std::string("specular_vp ") + SPECULAR_EXAMPLE_VERSION,
+                       "print the version and exit");
+  app.add_option("--out", a.out, "the image: 4 panels of N x N pixels side by side, binary PPM (P6)")
+      ->required();
+  app.add_option("--size", a.size, "panel size in pixels, 16..1024 (default 256)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            char* end = nullptr;
+            const long size = std::strtol(text.c_str(), &end, 10);  // decimal: CLI11 reads 010 as octal
+            if (text.empty() || *end != '\0' || size < 16 || size > 1024)
+              return "'" + text + "' is not an integer in [16, 1024]";
+            text = std::to_string(size);
+            return {};
+          },
+          "N"));
+  static const std::map<std::string, Normalisation> policies{
+      {"patent", Normalisation::patent}, {"energy", Normalisation::energy}, {"none", Normalisation::none}};
+  app.add_option_function<std::string>(
+         "--policy", [&](const std::string& name) { a.policy = policies.at(name); },
+         "the IP's ROM 38 contents (default none: K = 1, so every panel's highlight peaks at the "
+         "light's intensity; patent: 2pi/(n+2), whose n = 1000 highlight is nearly black; energy: "
+         "(n+2)/(2pi))")
+      ->check(CLI::Validator(
+          [](std::string& name) -> std::string {
+            return policies.count(name) ? "" : "'" + name + "' is not one of: patent, energy, none";
+          },
+          "patent|energy|none"));
+  app.add_option_function<std::string>(
+         "--constants", [&](const std::string& text) { a.constants = parse_constants(text); },
+         "the IP's pins 19 (h), 20 (a) and ROM 38's scale s (default patent: 1/2, 1, 1; minimax-half, "
+         "minimax: docs/study.md)")
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            try {
+              parse_constants(text);
+              return {};
+            } catch (const std::invalid_argument& e) {
+              return e.what();
+            }
+          },
+          "patent|minimax-half|minimax"));
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    std::exit(app.exit(e));  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "specular_vp: error: " << e.what() << "\n";
+    std::exit(exit_usage);
   }
-  if (a.out.empty()) usage_error("--out FILE is required");
   return a;
 }
 

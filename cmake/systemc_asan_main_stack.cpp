@@ -25,8 +25,8 @@
 //      stack instead of (0, 0), through a definition of __sanitizer_start_switch_fiber
 //      that libsystemc's weak reference binds to (below).
 //
-// Compiled into every target that links SystemC in a sanitizer build only (CMakeLists.txt:
-// SPECULAR_SANITIZE, SPECULAR_FUZZ). Without ASan, dlsym finds nothing and this does
+// Compiled once, in a sanitizer build only, and linked into every executable and shared
+// library that links SystemC (CMakeLists.txt: SPECULAR_SANITIZE, SPECULAR_FUZZ). Without ASan, dlsym finds nothing and this does
 // nothing. SPECULAR_ASAN_KEEP_SYSTEMC_STACK=1 turns it off, to see the fault it prevents.
 #include <dlfcn.h>
 

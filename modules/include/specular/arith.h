@@ -141,9 +141,14 @@ class Rom5Table {
     // The leading one moves to bit 63 and out; the next addr_bits bits are the address
     // (zero-filled when fewer bits follow the leading one).
     const LeadingOne one = leading_one(static_cast<std::uint64_t>(bus), 64);
-    const std::uint64_t address = (one.normalised << 1) >> (64 - addr_bits);
     const code_t exponent = one.msb - bus_frac_bits;
-    return exponent * (code_t{1} << word_bits) + words[address];
+    return exponent * (code_t{1} << word_bits) + words[mantissa_address(one, addr_bits)];
+  }
+  /// The mantissa table's address for a bus code > 0 whose leading one is `one` (found
+  /// within 64 bits): the `addr_bits` bits after it. The energy model's ROM 5 reads
+  /// (operation_features.cpp) address the table the same way.
+  static std::uint64_t mantissa_address(const LeadingOne& one, int addr_bits) {
+    return (one.normalised << 1) >> (64 - addr_bits);
   }
   /// The table itself, for reports and tests: word a = round(log2(1 + a/2^M) · 2^W).
   const std::vector<std::uint32_t>& words() const { return words_; }

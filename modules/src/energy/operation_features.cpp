@@ -76,8 +76,8 @@ SPECULAR_ENERGY_INLINE code_t rom5_address(const FormatSet& f, code_t bus) {
   if (bus <= 0) return 0;
   const int bits = f.widths.rom5_addr_bits;
   const arith::LeadingOne one = arith::leading_one(static_cast<std::uint64_t>(bus), 64);
-  const std::uint64_t mantissa = (one.normalised << 1) >> (64 - bits);
-  return static_cast<code_t>((static_cast<std::uint64_t>(one.msb) << bits) | mantissa);
+  return static_cast<code_t>((static_cast<std::uint64_t>(one.msb) << bits) |
+                             arith::Rom5Table::mantissa_address(one, bits));
 }
 
 /// ROM 5's table for `f`, one per widths for the whole process (the default widths in

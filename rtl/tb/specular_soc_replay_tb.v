@@ -67,14 +67,19 @@ module specular_soc_replay_tb;
         line = line + 1;
         op = 0; offset = 0; data = 0; strb = 0; resp = 0;
         fields = $sscanf(text, "%h %h %h %h %h %h", op, offset, data, strb, resp, extra);
-        if (blank(text)) begin
-          // nothing to replay
-        end else if (fields != 5) begin
-          $fatal(1, "specular_soc_replay_tb: %0s line %0d: %0d fields, allowed 5 hex (<op> <offset> <data> <strb> <resp>)",
-                 TRACE, line, fields < 0 ? 0 : fields);
-        end else if (^{op, offset, data, strb, resp} === 1'bx) begin
-          $fatal(1, "specular_soc_replay_tb: %0s line %0d: a field with x or z, allowed hex digits 0-9 a-f",
-                 TRACE, line);
+        // A well-formed line first: blank() walks all 1 024 characters, which for every
+        // line was 94 % of the replay's time in Icarus (a tenth of the driver's trace:
+        // 28.1 CPU-s before, 1.6 after).
+        if (fields != 5 || ^{op, offset, data, strb, resp} === 1'bx) begin
+          if (blank(text)) begin
+            // nothing to replay
+          end else if (fields != 5) begin
+            $fatal(1, "specular_soc_replay_tb: %0s line %0d: %0d fields, allowed 5 hex (<op> <offset> <data> <strb> <resp>)",
+                   TRACE, line, fields < 0 ? 0 : fields);
+          end else begin
+            $fatal(1, "specular_soc_replay_tb: %0s line %0d: a field with x or z, allowed hex digits 0-9 a-f",
+                   TRACE, line);
+          end
         end else begin
           if (op > 1)
             $fatal(1, "specular_soc_replay_tb: %0s line %0d: op %0h (allowed: 0 read, 1 write)", TRACE, line, op);

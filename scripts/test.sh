@@ -8,11 +8,15 @@
 #   scripts/test.sh --full     the same with every long test whole and the nightly ones
 #   scripts/test.sh --quick    skip the tests labelled long (exhaustive sweeps, soak)
 #
-# Then, unless skipped: the consumer of the installed package (scripts/verify/consumer_check.sh;
-# SPECULAR_SKIP_CONSUMER=1 skips it), the quick suite under ASan/UBSan/LSan (scripts/verify/sanitize.sh,
-# build-asan; SPECULAR_SKIP_SANITIZE=1 skips it) and a bounded libFuzzer run, 30 s per
-# target (scripts/verify/fuzz.sh, build-fuzz; SPECULAR_SKIP_FUZZ=1 skips it). Each stage's wall
-# time is printed at its end and all of them at exit (docs/testing/ci_budget.md, "Measured").
+# Each test runs once (scripts/suite_labels.sh): the Release build in build/ runs the long,
+# RTL, docs and farm tests; the quick tests run under ASan/UBSan/LSan in the sanitizer stage
+# (scripts/verify/sanitize.sh, build-asan; SPECULAR_SKIP_SANITIZE=1 skips it and runs them
+# in Release instead), and scripts/verify/suite_partition.sh checks that no test is left
+# out. Then, unless skipped: the consumer of the installed package
+# (scripts/verify/consumer_check.sh; SPECULAR_SKIP_CONSUMER=1 skips it) and a bounded
+# libFuzzer run, 30 s per target (scripts/verify/fuzz.sh, build-fuzz; SPECULAR_SKIP_FUZZ=1
+# skips it). Each stage's wall time is printed at its end and all of them at exit
+# (docs/testing/ci_budget.md, "Measured").
 # Needs the packages of scripts/setup.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,15 +29,25 @@ for arg in "$@"; do
   case "$arg" in
     --quick) tier=quick ;;
     --full) tier=full ;;
-    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; trap - EXIT; exit 0 ;;
+    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; trap - EXIT; exit 0 ;;
     *) echo "test.sh: unknown option '$arg' (allowed: --quick, --full, --help)" >&2; trap - EXIT; exit 2 ;;
   esac
 done
 
 jobs=$(nproc 2>/dev/null || echo 2)
+# Each test runs once (scripts/suite_labels.sh): when the sanitizer stage runs, it builds
+# and runs the quick tests under ASan and UBSan, and the Release build leaves them out
+# (-DSPECULAR_BUILD_QUICK_TESTS=OFF) and runs the rest: the long tests, the Verilog tools',
+# the docs' and the farm's. SPECULAR_SKIP_SANITIZE=1 builds and runs them all in Release.
+# shellcheck source=scripts/suite_labels.sh
+source scripts/suite_labels.sh
+split=1
+[ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ] || split=0
+quick_tests=ON
+[ "$split" -eq 0 ] || quick_tests=OFF
 configure() {
-  echo "+ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release"
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+  echo "+ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSPECULAR_BUILD_QUICK_TESTS=$quick_tests"
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSPECULAR_BUILD_QUICK_TESTS=$quick_tests
 }
 build() {
   echo "+ cmake --build build -j$jobs"
@@ -42,9 +56,9 @@ build() {
 stage configure configure
 stage build build
 
-ctest_args=(--test-dir build --output-on-failure -j"$jobs")
+tier_args=()
 case "$tier" in
-  quick) ctest_args+=(-LE long) ;;
+  quick) tier_args+=(-LE long) ;;
   full) unset SPECULAR_OPERATION_SHARD ;;
   ci)
     # One shard of n of every long test (tests/support/operation_shard.h): every device,
@@ -59,10 +73,16 @@ case "$tier" in
          "(scripts/test.sh --full runs them whole)"
     # The tests labelled nightly run the documented silicon flow end to end (15-30 min
     # each on 2 cores): beyond CI's 45-minute budget, so --full runs them.
-    ctest_args+=(-LE nightly)
+    tier_args+=(-LE nightly)
     echo "test.sh: tests labelled nightly left to scripts/test.sh --full"
     ;;
 esac
+ctest_args=(--test-dir build --output-on-failure -j"$jobs" "${tier_args[@]}")
+if [ "$split" -eq 1 ]; then
+  ctest_args+=(-L "$SPECULAR_RELEASE_RUNS")
+  echo "test.sh: Release runs the tests labelled $SPECULAR_RELEASE_RUNS; the quick ones run" \
+       "under the sanitizers (stage sanitize)"
+fi
 stage ctest ctest "${ctest_args[@]}"
 
 # The IP as a package: install, then build a consumer with find_package and with
@@ -76,6 +96,11 @@ fi
 if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ]; then
   echo "+ scripts/verify/sanitize.sh"
   stage sanitize scripts/verify/sanitize.sh
+  # The two runs together leave no test out (but those the tier leaves to later).
+  later=""
+  [ "${#tier_args[@]}" -eq 0 ] || later=${tier_args[1]}
+  echo "+ scripts/verify/suite_partition.sh build ${SPECULAR_ASAN_BUILD_DIR:-build-asan} $later"
+  stage suite_partition scripts/verify/suite_partition.sh build "${SPECULAR_ASAN_BUILD_DIR:-build-asan}" "$later"
 fi
 if [ "${SPECULAR_SKIP_FUZZ:-0}" != 1 ]; then
   echo "+ scripts/verify/fuzz.sh 30"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer
+# Builds everything but the bench with AddressSanitizer and UndefinedBehaviorSanitizer
 # (-DSPECULAR_SANITIZE=ON) and runs the test suite under them; LeakSanitizer runs
 # too, with tests/lsan.supp suppressing only SystemC's own allocations. Before the suite,
 # scripts/verify/sanitizer_exit_check.sh runs SystemC programs under `setarch -R` (issue 45); a
@@ -7,6 +7,7 @@
 #
 #   scripts/verify/sanitize.sh            quick suite (tests labelled long are skipped)
 #   scripts/verify/sanitize.sh --all      every test, long ones included (slow)
+# (Neither runs the tests labelled rtl, docs or bench: scripts/suite_labels.sh.)
 #
 # Build directory: build-asan (or $SPECULAR_ASAN_BUILD_DIR). Needs scripts/setup.sh.
 set -euo pipefail
@@ -16,7 +17,7 @@ all=0
 for arg in "$@"; do
   case "$arg" in
     --all) all=1 ;;
-    -h|--help) sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "sanitize.sh: unknown option '$arg' (allowed: --all, --help)" >&2; exit 2 ;;
   esac
 done
@@ -32,9 +33,11 @@ flags="-Og -g1 -DNDEBUG"
 # minutes of a cold build, docs/testing/ci_budget.md "What keeps it there, and what each change saved"); --all builds and runs them.
 long_tests=OFF
 [ "$all" -eq 0 ] || long_tests=ON
-echo "+ cmake -S . -B $build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='$flags' -DSPECULAR_SANITIZE=ON -DSPECULAR_BUILD_BENCH=ON -DSPECULAR_BUILD_LONG_TESTS=$long_tests"
+# The bench measures speed: its smoke test (label bench) runs in Release, and this build
+# leaves it out (scripts/suite_labels.sh).
+echo "+ cmake -S . -B $build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO='$flags' -DSPECULAR_SANITIZE=ON -DSPECULAR_BUILD_BENCH=OFF -DSPECULAR_BUILD_LONG_TESTS=$long_tests"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$flags" \
-  -DSPECULAR_SANITIZE=ON -DSPECULAR_BUILD_BENCH=ON -DSPECULAR_BUILD_LONG_TESTS=$long_tests
+  -DSPECULAR_SANITIZE=ON -DSPECULAR_BUILD_BENCH=OFF -DSPECULAR_BUILD_LONG_TESTS=$long_tests
 echo "+ cmake --build $build -j$jobs"
 cmake --build "$build" -j"$jobs"
 
@@ -48,8 +51,12 @@ rm -f "$junit"
 ctest_args=(--test-dir "$build" --output-on-failure -j"$jobs" --output-junit "$junit")
 # The rtl-labelled tests run Verilog tools (Verilator's lint, Icarus, Yosys) on the
 # Verilog sources, the docs-labelled ones Sphinx, Chromium and link checks on the
-# Markdown: nothing of ours for the sanitizers to watch, and run by test.sh.
-if [ "$all" -eq 0 ]; then ctest_args+=(-LE "long|rtl|docs"); else ctest_args+=(-LE "rtl|docs"); fi
+# Markdown: nothing of ours for the sanitizers to watch; they, the long tests and the
+# bench's run in scripts/test.sh's Release stage, and this suite is the only run of the
+# others (scripts/suite_labels.sh).
+# shellcheck source=scripts/suite_labels.sh
+source scripts/suite_labels.sh
+if [ "$all" -eq 0 ]; then ctest_args+=(-LE "$SPECULAR_SANITIZER_SKIPS"); else ctest_args+=(-LE "${SPECULAR_SANITIZER_SKIPS/long|/}"); fi
 echo "+ ctest ${ctest_args[*]}"
 # The tests' launcher (scripts/verify/sanitizer_env.sh) sets the sanitizer options; the
 # exports here cover anything ctest starts without it.

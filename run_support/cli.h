@@ -19,11 +19,10 @@
 #include <string>
 #include <vector>
 
+#include "version.h"
+
 namespace specular {
 namespace cli {
-
-/// The project's version (CMake's PROJECT_VERSION).
-const char* version();
 
 /// --version, the error spelling, the help's layout; `footer` ends the help (exit
 /// statuses, examples).

@@ -14,7 +14,6 @@
 #include <optional>
 #include <utility>
 
-#include "cli.h"
 #include "input.h"
 #include "options.h"
 #include "output_file.h"
@@ -26,6 +25,7 @@
 #include "specular/core.h"
 #include "specular/systemc.h"
 #include "usage_error.h"
+#include "version.h"
 
 namespace specular {
 namespace tb {

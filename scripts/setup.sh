@@ -11,6 +11,7 @@ set -euo pipefail
 
 # What each package is for:
 #   build-essential, cmake, pkg-config  compiler and build (SystemC is found via pkg-config)
+#   ninja-build                         the generator scripts/test.sh gives new build folders
 #   libsystemc-dev                      SystemC 2.3.4 (kernel, TLM-2.0)
 #   libgtest-dev, googletest            GoogleTest for the test suite (ctest)
 #   libbenchmark-dev                    Google Benchmark for the performance study
@@ -39,7 +40,7 @@ set -euo pipefail
 #                                       (a single-node cluster) and its test tests/farm/farm_test.sh
 #                                       (jq compares the merged and unsharded JSON)
 PACKAGES=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ninja-build
   libsystemc-dev
   libgtest-dev googletest
   libbenchmark-dev

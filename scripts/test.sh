@@ -9,7 +9,7 @@
 #   scripts/test.sh --quick    skip the tests labelled long (exhaustive sweeps, soak)
 #
 # Each test runs once (scripts/suite_labels.sh): the Release build in build/ runs the long,
-# RTL, docs and farm tests; the quick tests run under ASan/UBSan/LSan in the sanitizer stage
+# RTL, docs, farm and bench tests; the quick tests run under ASan/UBSan/LSan in the sanitizer stage
 # (scripts/verify/sanitize.sh, build-asan; SPECULAR_SKIP_SANITIZE=1 skips it and runs them
 # in Release instead), and scripts/verify/suite_partition.sh checks that no test is left
 # out. Then, unless skipped: the consumer of the installed package
@@ -35,10 +35,18 @@ for arg in "$@"; do
 done
 
 jobs=$(nproc 2>/dev/null || echo 2)
+# New build folders (build/, build-asan, build-fuzz, the consumer's and the tests' own) with
+# Ninja when it is installed (scripts/setup.sh installs ninja-build): it reads the
+# compilers' dependency files where Make scans each target's dependencies before building
+# it. A folder configured before keeps its generator; CMAKE_GENERATOR set by the caller wins.
+if [ -z "${CMAKE_GENERATOR:-}" ] && command -v ninja >/dev/null 2>&1; then
+  export CMAKE_GENERATOR=Ninja
+fi
 # Each test runs once (scripts/suite_labels.sh): when the sanitizer stage runs, it builds
 # and runs the quick tests under ASan and UBSan, and the Release build leaves them out
 # (-DSPECULAR_BUILD_QUICK_TESTS=OFF) and runs the rest: the long tests, the Verilog tools',
-# the docs' and the farm's. SPECULAR_SKIP_SANITIZE=1 builds and runs them all in Release.
+# the docs', the farm's and the bench's. SPECULAR_SKIP_SANITIZE=1 builds and runs them all
+# in Release.
 # shellcheck source=scripts/suite_labels.sh
 source scripts/suite_labels.sh
 split=1

@@ -64,9 +64,10 @@ build() {
 stage configure configure
 stage build build
 
-tier_args=()
+# The labels this tier leaves to a later run (none with --full).
+later=""
 case "$tier" in
-  quick) tier_args+=(-LE long) ;;
+  quick) later=long ;;
   full) unset SPECULAR_OPERATION_SHARD ;;
   ci)
     # One shard of n of every long test (tests/support/operation_shard.h): every device,
@@ -81,11 +82,12 @@ case "$tier" in
          "(scripts/test.sh --full runs them whole)"
     # The tests labelled nightly run the documented silicon flow end to end (15-30 min
     # each on 2 cores): beyond CI's 45-minute budget, so --full runs them.
-    tier_args+=(-LE nightly)
+    later=nightly
     echo "test.sh: tests labelled nightly left to scripts/test.sh --full"
     ;;
 esac
-ctest_args=(--test-dir build --output-on-failure -j"$jobs" "${tier_args[@]}")
+ctest_args=(--test-dir build --output-on-failure -j"$jobs")
+[ -z "$later" ] || ctest_args+=(-LE "$later")
 if [ "$split" -eq 1 ]; then
   ctest_args+=(-L "$SPECULAR_RELEASE_RUNS")
   echo "test.sh: Release runs the tests labelled $SPECULAR_RELEASE_RUNS; the quick ones run" \
@@ -105,8 +107,6 @@ if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ]; then
   echo "+ scripts/verify/sanitize.sh"
   stage sanitize scripts/verify/sanitize.sh
   # The two runs together leave no test out (but those the tier leaves to later).
-  later=""
-  [ "${#tier_args[@]}" -eq 0 ] || later=${tier_args[1]}
   echo "+ scripts/verify/suite_partition.sh build ${SPECULAR_ASAN_BUILD_DIR:-build-asan} $later"
   stage suite_partition scripts/verify/suite_partition.sh build "${SPECULAR_ASAN_BUILD_DIR:-build-asan}" "$later"
 fi

@@ -471,7 +471,7 @@ struct BenchOptions {
   int repetitions = 0;  // 0: the default, 5 (1 with --quick)
 };
 
-void add_options(CLI::App& app, BenchOptions& o, Plan& plan) {
+void add_options(specular::cli::Command& app, BenchOptions& o, Plan& plan) {
   namespace cli = specular::cli;
   app.add_flag("--all", o.all, "every model in its own child process, with the ratios to std::pow (the default)");
   app.add_flag("--variants", o.variants_only,
@@ -528,7 +528,7 @@ int bench_main(const BenchOptions& o, Plan plan) {
 }  // namespace specular_bench
 
 int sc_main(int argc, char** argv) {
-  CLI::App app{"specular_bench: results per second of every model, each in its own process; prints one\n"
+  specular::cli::Command app{"specular_bench: results per second of every model, each in its own process; prints one\n"
                "`name: value unit` line per figure (docs/performance.md).\n"
                "  specular_bench [--all | --variants] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
                "  specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"

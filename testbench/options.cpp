@@ -164,7 +164,7 @@ void apply_value(const std::string& option, const std::string& value, Options& o
 }
 
 /// Declares every option of specular_tb on `app`; each value goes through apply_value.
-void add_options(CLI::App& app, Options& o, std::string& rgb_value) {
+void add_options(specular::cli::Command& app, Options& o, std::string& rgb_value) {
   const auto valued = [&](const std::string& name, const std::string& type, const std::string& help) {
     return app
         .add_option_function<std::string>(
@@ -300,7 +300,7 @@ void add_options(CLI::App& app, Options& o, std::string& rgb_value) {
          "[--output FILE] [--partial FILE] merges every shard's partial into the unsharded run's "
          "report (refusing a missing, duplicated or mismatched shard)")
       ->group(output);
-  app.set_config("--config", "",
+  app.set_config("--config",
                  "read options from FILE, TOML or INI: a line NAME = VALUE per long option (cos = 0.5, "
                  "sweep = true, width = [\"rom5_word_bits=20\", \"reg9_frac_bits=16\"]); the command "
                  "line's options win")
@@ -323,7 +323,7 @@ std::string config_place(const std::string& path, const std::string& option) {
 }
 
 /// Checks what no single option can: which go together, which exclude each other.
-void check_combination(const CLI::App& app, Options& o, const std::string& rgb_value) {
+void check_combination(const specular::cli::Command& app, Options& o, const std::string& rgb_value) {
   const auto given = [&](const std::string& name) { return app.count(name) > 0; };
   try {
     o.config.widths.validate();
@@ -463,7 +463,7 @@ Exit status: 0 every computation within tolerance; 1 some computation out of
   (nothing is run); 3 internal error.)";
 
 /// The command line, declared: house_rules, the texts, every option.
-void declare(CLI::App& app, Options& o, std::string& rgb_value) {
+void declare(specular::cli::Command& app, Options& o, std::string& rgb_value) {
   app.description(description);
   cli::house_rules(app, footer);
   add_options(app, o, rgb_value);
@@ -472,21 +472,23 @@ void declare(CLI::App& app, Options& o, std::string& rgb_value) {
 }  // namespace
 
 Options parse_options(const std::vector<std::string>& args) {
-  CLI::App app{"", "specular_tb"};
+  specular::cli::Command app{"", "specular_tb"};
   Options o;
   std::string rgb_value;
   declare(app, o, rgb_value);
   try {
-    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-    app.parse(reversed);
-  } catch (const CLI::CallForHelp&) {
-    o.help = true;
-    return o;
-  } catch (const CLI::CallForVersion&) {
-    o.version = true;
-    return o;
-  } catch (const CLI::ParseError& e) {
-    std::string message = cli::error_text(app, e, args);
+    switch (cli::parse(app, args)) {
+      case cli::Parsed::help:
+        o.help = true;
+        return o;
+      case cli::Parsed::version:
+        o.version = true;
+        return o;
+      case cli::Parsed::run:
+        break;
+    }
+  } catch (const cli::CommandLineError& e) {
+    std::string message = e.what();
     const auto see = message.find(" (see --help)");  // run_testbench says where to look
     if (see != std::string::npos) message.erase(see, 13);
     // A value missing at the end of the line: say what it must be.
@@ -498,7 +500,7 @@ Options parse_options(const std::vector<std::string>& args) {
     throw UsageError(message);
   } catch (const UsageError& e) {  // a value refused by apply_value
     const std::string message = e.what();
-    const std::string config = app.get_config_ptr()->as<std::string>();
+    const std::string config = app.config_file();
     const std::string option = message.substr(0, message.find(':'));
     const bool on_line = std::any_of(args.begin(), args.end(), [&](const std::string& a) {
       return a == option || a.rfind(option + "=", 0) == 0;
@@ -512,11 +514,10 @@ Options parse_options(const std::vector<std::string>& args) {
 }
 
 std::string help_text() {
-  CLI::App app{"", "specular_tb"};
+  specular::cli::Command app{"", "specular_tb"};
   Options o;
   std::string rgb_value;
   declare(app, o, rgb_value);
-  cli::wrap_help(app);
   return app.help();
 }
 

@@ -84,26 +84,30 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
   std::vector<std::string> files;
   OutputFormat format = OutputFormat::text;
   std::string output_path, partial_path;
-  CLI::App app{"specular_tb --merge: every shard's partial result merged into the unsharded run's report\n"
+  specular::cli::Command app{"specular_tb --merge: every shard's partial result merged into the unsharded run's report\n"
                "(refusing a missing, duplicated or mismatched shard).",
                "specular_tb --merge"};
   cli::house_rules(app);
-  const auto non_empty = CLI::Validator(
-      [](std::string& v) { return v.empty() ? std::string("the file name is empty") : std::string(); }, "");
   app.add_option("FILE", files, "the partial results, one per shard")->required()->expected(1, -1);
   cli::add_parsed(app, "--format", format, parse_output_format, "text (default) or json")->type_name("text|json");
-  app.add_option("--output", output_path, "write the report there")->type_name("FILE")->check(non_empty);
-  app.add_option("--partial", partial_path, "also write the merged partial result")->type_name("FILE")->check(non_empty);
+  app.add_option("--output", output_path, "write the report there")->type_name("FILE")->check(cli::file_name());
+  app.add_option("--partial", partial_path, "also write the merged partial result")
+      ->type_name("FILE")
+      ->check(cli::file_name());
   try {
-    std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
-    app.parse(reversed);
-  } catch (const CLI::Success&) {  // --help, --version
-    out << (app.get_help_ptr()->count() ? app.help() : std::string("specular_tb ") + cli::version() + "\n");
-    return 0;
-  } catch (const CLI::RequiredError&) {
-    throw UsageError("--merge needs the partial files of every shard (FILE...)");
-  } catch (const CLI::ParseError& e) {
-    std::string message = cli::error_text(app, e, args);
+    switch (cli::parse(app, args)) {
+      case cli::Parsed::help:
+        out << app.help();
+        return 0;
+      case cli::Parsed::version:
+        out << "specular_tb " << cli::version() << '\n';
+        return 0;
+      case cli::Parsed::run:
+        break;
+    }
+  } catch (const cli::CommandLineError& e) {
+    if (e.missing_required()) throw UsageError("--merge needs the partial files of every shard (FILE...)");
+    std::string message = e.what();
     const auto see = message.find(" (see --help)");  // run_testbench says where to look
     if (see != std::string::npos) message.erase(see, 13);
     throw UsageError("--merge: " + message);

@@ -67,8 +67,8 @@ struct Options {
 };
 
 /// Declares the options on `app` (run_support/cli.h), each writing into `o`.
-void add_options(CLI::App& app, Options& o) {
-  CLI::Option_group* mode = app.add_option_group("mode", "exactly one of");
+void add_options(specular::cli::Command& app, Options& o) {
+  specular::cli::Command* mode = app.add_option_group("mode", "exactly one of");
   mode->add_option("--out-dir", o.out_dir,
                    "write DIR/rom5.hex (2^rom5_addr_bits words), DIR/rom38.hex (2^B banks of 2^n_bits "
                    "words; bank b = Normalisation value b, unused banks zero), DIR/pins.hex, DIR/exp2.hex "
@@ -248,7 +248,7 @@ int check_dump(const Options& o) {
 extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
-  CLI::App app{"The ROM images of the RTL twin, written once from the C++ tables, or a dump the RTL wrote\n"
+  specular::cli::Command app{"The ROM images of the RTL twin, written once from the C++ tables, or a dump the RTL wrote\n"
                "checked against them.",
                "specular_romgen"};
   specular::cli::house_rules(app, "Exit status: 0 done, 1 a difference (--check), 2 bad option or file, 3 internal.");

@@ -101,7 +101,7 @@ int features(const std::string& stream, const std::string& out_path, bool model)
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The energy model's features of each operation of an operand stream, computed by the C++\n"
+  specular::cli::Command app{"The energy model's features of each operation of an operand stream, computed by the C++\n"
                "the model charges with (docs/energy/calibration.md).",
                "specular_energy_features"};
   specular::cli::house_rules(app, "Exit status: 0 written, 2 bad input (the line and the value named).");

@@ -29,13 +29,13 @@ extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
   namespace fh = specular::firmware_header;
-  CLI::App app{"Prints the firmware C header from the register map, or checks or rewrites the committed copy.",
+  specular::cli::Command app{"Prints the firmware C header from the register map, or checks or rewrites the committed copy.",
                "specular_firmware_header"};
   specular::cli::house_rules(app, "Exit status: 0 done (--check: the committed header is the generated one), "
                                   "1 it differs, 2 bad arguments or an unreadable or unwritable file.");
   bool print = false;
   std::string check_dir, write_dir, c_header;
-  CLI::Option_group* mode = app.add_option_group("mode", "exactly one of");
+  specular::cli::Command* mode = app.add_option_group("mode", "exactly one of");
   mode->add_flag("--print", print, "write the header to standard output");
   mode->add_option("--check", check_dir, "exit 1 unless DIR/firmware/include/specular/specular_regs.h is this header")
       ->type_name("DIR");

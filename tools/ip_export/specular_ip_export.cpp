@@ -196,12 +196,12 @@ int export_ip(std::map<std::string, std::string>& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The IP's descriptions for SoC tools, written from the register map and the Verilog tops'\n"
+  specular::cli::Command app{"The IP's descriptions for SoC tools, written from the register map and the Verilog tops'\n"
                "headers (docs/ipxact.md). FILE \"-\" is standard output.",
                "specular_ip_export"};
   specular::cli::house_rules(app, "Exit status: 0 written, 2 bad arguments, an unreadable Verilog file or an "
                                   "unwritable output.");
-  app.set_version_flag("");  // --version V is the component's version here
+  app.disable_version_flag();  // --version V is the component's version here
   std::map<std::string, std::string> options{{"--version", SPECULAR_PACKAGE_VERSION}, {"--libdir", "lib"}};
   const auto option = [&](const std::string& name, const std::string& type, const std::string& help) {
     return app

@@ -10,7 +10,7 @@
 #include "progress.h"
 
 int main(int argc, char** argv) {
-  CLI::App app{"Prints the progress line of every long run (run_support/progress.h) on standard output.",
+  specular::cli::Command app{"Prints the progress line of every long run (run_support/progress.h) on standard output.",
                "specular_progress"};
   specular::cli::house_rules(app);
   std::uint64_t done = 0, total = 0;

@@ -285,7 +285,7 @@ int report(const std::vector<DeviceProof>& proofs, const Json& settings, std::si
 }
 
 /// Declares the options on `app` (run_support/cli.h), each writing into `o`.
-void add_prove_options(CLI::App& app, ProveOptions& o) {
+void add_prove_options(specular::cli::Command& app, ProveOptions& o) {
   cli::add_parsed(app, "--model", o.model,
                   [](const std::string& v) {
                     const Model m = parse_model(v);
@@ -312,8 +312,7 @@ void add_prove_options(CLI::App& app, ProveOptions& o) {
       ->type_name("I/N");
   app.add_option("--partial", o.partial_path, "write this run's partial result (JSON) for --merge")
       ->type_name("FILE")
-      ->check(CLI::Validator(
-          [](std::string& v) { return v.empty() ? std::string("the file name is empty") : std::string(); }, ""));
+      ->check(cli::file_name());
   app.add_option("--cos-stride", o.cos_stride, "every K-th cos code (default 1 = every code)")
       ->type_name("K")
       ->check(cli::integer_in(1, 65536, "K"));
@@ -419,7 +418,7 @@ int run_prove(const ProveOptions& o, bool model_given, std::ostream& out, std::o
 
 int sc_main(int argc, char** argv) {
   using namespace specular;
-  CLI::App app{"specular_prove: every cos code x every n x every buildable device of a model, against the\n"
+  specular::cli::Command app{"specular_prove: every cos code x every n x every buildable device of a model, against the\n"
                "bit-accurate core (issue 25).\n"
                "  specular_prove --model rtl|rtl-sync|pin|tlm [--device NAME|all] [--shard I/N]\n"
                "                 [--partial FILE] [--cos-stride K] [--quiet]\n"

@@ -31,13 +31,13 @@ extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
   using namespace specular::register_docs;
-  CLI::App app{"Prints the docs' register tables from the register map, or checks or rewrites them in place.",
+  specular::cli::Command app{"Prints the docs' register tables from the register map, or checks or rewrites them in place.",
                "specular_register_docs"};
   specular::cli::house_rules(app, "Exit status: 0 done (--check: every table matches), 1 a table differs or its "
                                   "markers are missing, 2 bad arguments or an unreadable file.");
   bool print = false;
   std::string check_dir, write_dir;
-  CLI::Option_group* mode = app.add_option_group("mode", "exactly one of");
+  specular::cli::Command* mode = app.add_option_group("mode", "exactly one of");
   mode->add_flag("--print", print, "write every generated table to standard output");
   mode->add_option("--check", check_dir, "exit 1 unless DIR's docs carry exactly these tables")->type_name("DIR");
   mode->add_option("--write", write_dir, "replace the tables between their markers in DIR's docs")->type_name("DIR");

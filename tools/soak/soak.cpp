@@ -37,7 +37,7 @@ const char* const soak_footer =
     "own. One line per stage: ops, mismatches, time, VmRSS early (after a tenth of the stage) and "
     "late (at its end). Exit status 0 when no stage has a mismatch, 1 otherwise, 2 for a bad option.";
 
-void add_soak_options(CLI::App& app, SoakOptions& o) {
+void add_soak_options(specular::cli::Command& app, SoakOptions& o) {
   const auto count = [&](const std::string& name, std::size_t& target, const std::string& help) {
     app.add_option(name, target, help)
         ->type_name("N")

@@ -13,9 +13,11 @@
 #include "specular/core.h"
 #include "specular/tlm/pin_target.h"
 
-namespace CLI {
-class App;
-}
+namespace specular {
+namespace cli {
+class Command;
+}  // namespace cli
+}  // namespace specular
 
 namespace specular {
 namespace soak {
@@ -38,7 +40,7 @@ struct SoakOptions {
 };
 
 /// Declares the options on `app` (run_support/cli.h), each writing into `options`.
-void add_soak_options(CLI::App& app, SoakOptions& options);
+void add_soak_options(specular::cli::Command& app, SoakOptions& options);
 /// What the soak does, for --help: before and after the options.
 extern const char* const soak_description;
 extern const char* const soak_footer;

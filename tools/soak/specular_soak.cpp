@@ -74,7 +74,7 @@ int soak(const specular::soak::SoakOptions& options) {
 }  // namespace
 
 int sc_main(int argc, char** argv) {
-  CLI::App app{specular::soak::soak_description, "specular_soak"};
+  specular::cli::Command app{specular::soak::soak_description, "specular_soak"};
   specular::cli::house_rules(app, specular::soak::soak_footer);
   specular::soak::SoakOptions options;
   specular::soak::add_soak_options(app, options);

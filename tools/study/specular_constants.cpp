@@ -19,7 +19,7 @@ using namespace specular::study;
 extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
-  CLI::App app{"Searches the constants a (pin 20), h (pin 19, F fraction bits) and the ROM 38 scale s\n"
+  specular::cli::Command app{"Searches the constants a (pin 20), h (pin 19, F fraction bits) and the ROM 38 scale s\n"
                "that minimise max |s*A - 2^-x| over x >= 0 with the peak exact, for h = 1/2 and for\n"
                "every F = 1 .. N. Deterministic; the global optimum of each grid.",
                "specular_constants"};
@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out, "CSV file for the table")
       ->type_name("FILE")
       ->capture_default_str()
-      ->check(CLI::Validator([](std::string& v) { return v.empty() ? "the file name is empty" : ""; }, ""));
+      ->check(specular::cli::file_name());
   app.add_option("--max-f", max_f, "largest F searched")
       ->type_name("N")
       ->capture_default_str()

@@ -313,7 +313,7 @@ int run_study(const StudyOptions& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Measures the device's approximation of cos^n, its energy integrals and its fixed-point\n"
+  specular::cli::Command app{"Measures the device's approximation of cos^n, its energy integrals and its fixed-point\n"
                "widths, and writes CSV files for scripts/flows/design_space/plot_study.py.\n"
                "  specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--shard I/N] [--partial FILE]\n"
                "  specular_study --merge PARTIAL... [--out DIR]",

@@ -18,9 +18,9 @@ std::vector<unsigned> StudyOptions::curve_n_values() { return {1, 2, 5, 10, 50, 
 
 std::vector<unsigned> StudyOptions::sphere_n_values() { return {1, 10, 100, 1000}; }
 
-void add_study_options(CLI::App& app, StudyOptions& o) {
-  const auto non_empty = CLI::Validator(
-      [](std::string& v) { return v.empty() ? std::string("the name is empty") : std::string(); }, "");
+void add_study_options(specular::cli::Command& app, StudyOptions& o) {
+  const cli::Check non_empty{
+      [](std::string& v) { return v.empty() ? std::string("the name is empty") : std::string(); }, ""};
   app.add_option("--out", o.out_dir, "directory for the CSV files (created)")
       ->type_name("DIR")
       ->capture_default_str()

@@ -4,9 +4,11 @@
 #include <string>
 #include <vector>
 
-namespace CLI {
-class App;
-}
+namespace specular {
+namespace cli {
+class Command;
+}  // namespace cli
+}  // namespace specular
 
 namespace specular {
 namespace study {
@@ -28,7 +30,7 @@ struct StudyOptions {
 };
 
 /// Declares the options on `app` (run_support/cli.h), each writing into `options`.
-void add_study_options(CLI::App& app, StudyOptions& options);
+void add_study_options(specular::cli::Command& app, StudyOptions& options);
 
 }  // namespace study
 }  // namespace specular

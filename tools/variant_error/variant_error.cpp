@@ -284,7 +284,7 @@ struct VariantErrorOptions {
   Shard shard;
 };
 
-void add_options(CLI::App& app, VariantErrorOptions& o) {
+void add_options(specular::cli::Command& app, VariantErrorOptions& o) {
   app.add_option("NAME", o.name, "the variant, one of: " + variant_list());
   app.add_flag("--list", o.list, "the registered variants' names, one a line (nothing else with it)");
   app.add_flag("--all", o.all, "every registered variant in turn (JSON: an array); with --json and --n only");
@@ -307,11 +307,10 @@ void add_options(CLI::App& app, VariantErrorOptions& o) {
       }));
 }
 
-int run(const CLI::App& app, const VariantErrorOptions& o, std::ostream& out) {
+int run(const specular::cli::Command& app, const VariantErrorOptions& o, std::ostream& out) {
   const auto only = [&](const std::string& mode, const std::vector<std::string>& allowed) {
-    for (const CLI::Option* opt : app.get_options()) {
-      const std::string name = opt->get_name();
-      if (opt->count() == 0 || name == mode || name == "--help" || name == "--version") continue;
+    for (const std::string& name : app.given()) {
+      if (name == mode || name == "--help" || name == "--version") continue;
       if (std::find(allowed.begin(), allowed.end(), name) == allowed.end())
         throw UsageError(mode + ": " + name + " does not apply" +
                          (allowed.empty() ? std::string(" (nothing else with it)") : " (allowed: " + [&] {
@@ -381,7 +380,7 @@ int run(const CLI::App& app, const VariantErrorOptions& o, std::ostream& out) {
 }  // namespace
 
 int run_variant_error(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  CLI::App app{description, "specular_variant_error"};
+  specular::cli::Command app{description, "specular_variant_error"};
   cli::house_rules(app, footer);
   VariantErrorOptions options;
   add_options(app, options);

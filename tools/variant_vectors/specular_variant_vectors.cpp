@@ -59,7 +59,7 @@ unsigned long long bits(code_t value, int width) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The vector file of rtl/tb/specular_variant_tb.v for one design variant: one operation per\n"
+  specular::cli::Command app{"The vector file of rtl/tb/specular_variant_tb.v for one design variant: one operation per\n"
                "line, in hex, cos n r g b lobe out_r out_g out_b, the expected values from the variant's\n"
                "C++ model; the edge cases first, then random operands.",
                "specular_variant_vectors"};

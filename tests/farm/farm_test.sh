@@ -66,10 +66,11 @@ done
 # Less the run time and the energy (each shard counts its first operation's toggles from a
 # reset device: docs/energy.md, the merge tests compare it within 1 %).
 summary_block() { sed -n '/^summary:/,$p' "$1" | grep -v -e '^  run time ' -e '^  energy: '; }
-check_merged() {  # check_merged RUN_DIR
-  local dir=$1 group
-  for ref in "$scratch"/ref/*.txt; do
-    group=$(basename "$ref" .txt)
+check_merged() {  # check_merged RUN_DIR: each group the run's tasks.tsv lists
+  local dir=$1 group ref
+  for group in $(cut -f2 "$dir/tasks.tsv" | uniq); do
+    ref=$scratch/ref/$group.txt
+    [[ -f $ref ]] || fail "$group: no unsharded reference in $scratch/ref"
     [[ -f $dir/merged/$group.txt ]] || fail "no merged result of $group in $dir/merged"
     if [[ $group == prove_* ]]; then
       cmp "$ref" "$dir/merged/$group.txt" || fail "$group: merged report differs from the unsharded one"
@@ -96,15 +97,21 @@ if [[ $executor == slurm ]]; then
 else
   "$farm" submit smoke "${run_options[@]}" --out "$scratch/run1" || fail "the smoke regression failed (see $scratch/run1)"
 fi
+[[ $(cut -f2 "$scratch/run1/tasks.tsv" | sort -u | wc -l) -eq $(find "$scratch/ref" -name '*.txt' | wc -l) ]] ||
+  fail "run 1 is not the whole smoke regression: $(cut -f2 "$scratch/run1/tasks.tsv" | sort -u | wc -l) groups"
 check_merged "$scratch/run1"
 jq -e '.verdict == "PASS" and .tasks_finished == .tasks_total and .total_cpu_seconds > 0' "$scratch/run1/report.json" >/dev/null ||
   fail "report.json does not say PASS with every task and their CPU time"
 
 # 2. The last task cancelled before it runs (one array task at a time): the merge fails
-#    naming it and its log; resubmitting runs only that task, then merges to PASS.
+#    naming it and its log; resubmitting runs only that task, then merges to PASS. Slurm
+#    runs only the last task's group (--groups; run 1 was the whole regression): a task
+#    ahead of it in the array keeps it pending until scancel.
 last=$(tail -n1 "$scratch/run1/tasks.tsv" | cut -f1)
+last_group=$(tail -n1 "$scratch/run1/tasks.tsv" | cut -f2)
 if [[ $executor == slurm ]]; then
-  "$farm" submit smoke "${run_options[@]}" --array-width 1 --out "$scratch/run2"
+  "$farm" submit smoke "${run_options[@]}" --groups "^$last_group\$" --array-width 1 --out "$scratch/run2"
+  [[ $(wc -l <"$scratch/run2/tasks.tsv") -ge 2 ]] || fail "run 2: $last_group has one task, none ahead of $last"
   array_job=$(awk '{print $2}' "$scratch/run2/jobs.txt")
   # the array index of a task is its line in the launch's list of IDs, less one
   index=$(( $(grep -nx "$last" "$scratch"/run2/array-*.ids | cut -d: -f1) - 1 ))

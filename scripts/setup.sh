@@ -12,6 +12,7 @@ set -euo pipefail
 # What each package is for:
 #   build-essential, cmake, pkg-config  compiler and build (SystemC is found via pkg-config)
 #   ninja-build                         the generator scripts/test.sh gives new build folders
+#   lld                                 the linker of our targets (CMakeLists.txt, SPECULAR_USE_LLD)
 #   libsystemc-dev                      SystemC 2.3.4 (kernel, TLM-2.0)
 #   libgtest-dev, googletest            GoogleTest for the test suite (ctest)
 #   libbenchmark-dev                    Google Benchmark for the performance study
@@ -41,6 +42,7 @@ set -euo pipefail
 #                                       (jq compares the merged and unsharded JSON)
 PACKAGES=(
   build-essential cmake pkg-config ninja-build
+  lld
   libsystemc-dev
   libgtest-dev googletest
   libbenchmark-dev

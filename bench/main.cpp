@@ -529,11 +529,11 @@ int bench_main(const BenchOptions& o, Plan plan) {
 
 int sc_main(int argc, char** argv) {
   specular::cli::Command app{"specular_bench: results per second of every model, each in its own process; prints one\n"
-               "`name: value unit` line per figure (docs/performance.md).\n"
-               "  specular_bench [--all | --variants] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
-               "  specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"
-               "  specular_bench --list",
-               "specular_bench"};
+                             "`name: value unit` line per figure (docs/performance.md).\n"
+                             "  specular_bench [--all | --variants] [--quick] [--repetitions N] [--seed N] [--vcd STEM]\n"
+                             "  specular_bench --model NAME [--ops N] [--reps N] [--seed N] [--verify N] [--vcd STEM] [--keep-vcd]\n"
+                             "  specular_bench --list",
+                             "specular_bench"};
   specular::cli::house_rules(app, "Exit status: 0 done, 1 a model failed or differs from the core, 2 bad usage.");
   specular_bench::BenchOptions options;
   specular_bench::Plan plan;

@@ -85,8 +85,8 @@ int run_merge(const std::vector<std::string>& args, std::ostream& out, std::ostr
   OutputFormat format = OutputFormat::text;
   std::string output_path, partial_path;
   specular::cli::Command app{"specular_tb --merge: every shard's partial result merged into the unsharded run's report\n"
-               "(refusing a missing, duplicated or mismatched shard).",
-               "specular_tb --merge"};
+                             "(refusing a missing, duplicated or mismatched shard).",
+                             "specular_tb --merge"};
   cli::house_rules(app);
   app.add_option("FILE", files, "the partial results, one per shard")->required()->expected(1, -1);
   cli::add_parsed(app, "--format", format, parse_output_format, "text (default) or json")->type_name("text|json");

@@ -249,8 +249,8 @@ extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"The ROM images of the RTL twin, written once from the C++ tables, or a dump the RTL wrote\n"
-               "checked against them.",
-               "specular_romgen"};
+                             "checked against them.",
+                             "specular_romgen"};
   specular::cli::house_rules(app, "Exit status: 0 done, 1 a difference (--check), 2 bad option or file, 3 internal.");
   Options o;
   add_options(app, o);

@@ -102,8 +102,8 @@ int features(const std::string& stream, const std::string& out_path, bool model)
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"The energy model's features of each operation of an operand stream, computed by the C++\n"
-               "the model charges with (docs/energy/calibration.md).",
-               "specular_energy_features"};
+                             "the model charges with (docs/energy/calibration.md).",
+                             "specular_energy_features"};
   specular::cli::house_rules(app, "Exit status: 0 written, 2 bad input (the line and the value named).");
   std::string stream, out_path;
   bool model = false;

@@ -30,7 +30,7 @@ extern "C" int sc_main(int, char**) { return 0; }
 int main(int argc, char** argv) {
   namespace fh = specular::firmware_header;
   specular::cli::Command app{"Prints the firmware C header from the register map, or checks or rewrites the committed copy.",
-               "specular_firmware_header"};
+                             "specular_firmware_header"};
   specular::cli::house_rules(app, "Exit status: 0 done (--check: the committed header is the generated one), "
                                   "1 it differs, 2 bad arguments or an unreadable or unwritable file.");
   bool print = false;

@@ -197,8 +197,8 @@ int export_ip(std::map<std::string, std::string>& options) {
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"The IP's descriptions for SoC tools, written from the register map and the Verilog tops'\n"
-               "headers (docs/ipxact.md). FILE \"-\" is standard output.",
-               "specular_ip_export"};
+                             "headers (docs/ipxact.md). FILE \"-\" is standard output.",
+                             "specular_ip_export"};
   specular::cli::house_rules(app, "Exit status: 0 written, 2 bad arguments, an unreadable Verilog file or an "
                                   "unwritable output.");
   app.disable_version_flag();  // --version V is the component's version here

@@ -11,7 +11,7 @@
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"Prints the progress line of every long run (run_support/progress.h) on standard output.",
-               "specular_progress"};
+                             "specular_progress"};
   specular::cli::house_rules(app);
   std::uint64_t done = 0, total = 0;
   double seconds = 0;

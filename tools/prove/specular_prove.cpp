@@ -419,11 +419,11 @@ int run_prove(const ProveOptions& o, bool model_given, std::ostream& out, std::o
 int sc_main(int argc, char** argv) {
   using namespace specular;
   specular::cli::Command app{"specular_prove: every cos code x every n x every buildable device of a model, against the\n"
-               "bit-accurate core (issue 25).\n"
-               "  specular_prove --model rtl|rtl-sync|pin|tlm [--device NAME|all] [--shard I/N]\n"
-               "                 [--partial FILE] [--cos-stride K] [--quiet]\n"
-               "  specular_prove --merge FILE...",
-               "specular_prove"};
+                             "bit-accurate core (issue 25).\n"
+                             "  specular_prove --model rtl|rtl-sync|pin|tlm [--device NAME|all] [--shard I/N]\n"
+                             "                 [--partial FILE] [--cos-stride K] [--quiet]\n"
+                             "  specular_prove --merge FILE...",
+                             "specular_prove"};
   cli::house_rules(app, "Exit status: 0 proved, 1 a difference, 2 bad usage or a refused merge, 3 internal.");
   tb::ProveOptions options;
   tb::add_prove_options(app, options);

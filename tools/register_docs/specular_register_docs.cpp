@@ -32,7 +32,7 @@ extern "C" int sc_main(int, char**) { return 0; }
 int main(int argc, char** argv) {
   using namespace specular::register_docs;
   specular::cli::Command app{"Prints the docs' register tables from the register map, or checks or rewrites them in place.",
-               "specular_register_docs"};
+                             "specular_register_docs"};
   specular::cli::house_rules(app, "Exit status: 0 done (--check: every table matches), 1 a table differs or its "
                                   "markers are missing, 2 bad arguments or an unreadable file.");
   bool print = false;

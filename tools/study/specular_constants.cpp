@@ -20,9 +20,9 @@ extern "C" int sc_main(int, char**) { return 0; }
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"Searches the constants a (pin 20), h (pin 19, F fraction bits) and the ROM 38 scale s\n"
-               "that minimise max |s*A - 2^-x| over x >= 0 with the peak exact, for h = 1/2 and for\n"
-               "every F = 1 .. N. Deterministic; the global optimum of each grid.",
-               "specular_constants"};
+                             "that minimise max |s*A - 2^-x| over x >= 0 with the peak exact, for h = 1/2 and for\n"
+                             "every F = 1 .. N. Deterministic; the global optimum of each grid.",
+                             "specular_constants"};
   specular::cli::house_rules(app, "Exit status: 0 done, 1 the search or the CSV file failed, 2 bad usage.");
   std::string out = "constants_search.csv";
   int max_f = 16;

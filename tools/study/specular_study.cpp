@@ -314,10 +314,10 @@ int run_study(const StudyOptions& options) {
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"Measures the device's approximation of cos^n, its energy integrals and its fixed-point\n"
-               "widths, and writes CSV files for scripts/flows/design_space/plot_study.py.\n"
-               "  specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--shard I/N] [--partial FILE]\n"
-               "  specular_study --merge PARTIAL... [--out DIR]",
-               "specular_study"};
+                             "widths, and writes CSV files for scripts/flows/design_space/plot_study.py.\n"
+                             "  specular_study [--out DIR] [--quick] [--workers N] [--quiet] [--shard I/N] [--partial FILE]\n"
+                             "  specular_study --merge PARTIAL... [--out DIR]",
+                             "specular_study"};
   cli::house_rules(app, "Exit status: 0 done, 1 a stage failed or a file could not be written, 2 bad usage "
                         "or a refused merge.");
   StudyOptions options;

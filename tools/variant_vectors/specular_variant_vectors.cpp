@@ -60,9 +60,9 @@ unsigned long long bits(code_t value, int width) {
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"The vector file of rtl/tb/specular_variant_tb.v for one design variant: one operation per\n"
-               "line, in hex, cos n r g b lobe out_r out_g out_b, the expected values from the variant's\n"
-               "C++ model; the edge cases first, then random operands.",
-               "specular_variant_vectors"};
+                             "line, in hex, cos n r g b lobe out_r out_g out_b, the expected values from the variant's\n"
+                             "C++ model; the edge cases first, then random operands.",
+                             "specular_variant_vectors"};
   specular::cli::house_rules(app, "Exit status: 0 written, 1 the output failed, 2 bad usage.");
   std::string name, out_path;
   long long count = 200;

@@ -321,7 +321,7 @@ int count_activity(const std::string& map_path, const std::string& vcd_path, con
 
 int main(int argc, char** argv) {
     specular::cli::Command app{"The toggle counter of scripts/flows/energy/energy.py for large VCDs (docs/energy.md).",
-                 "specular_vcd_activity"};
+                               "specular_vcd_activity"};
     specular::cli::house_rules(app, "Exit status: 0 written, 1 a file unreadable or malformed (named with "
                                     "the line), 2 usage.");
     std::string map_path, vcd_path, out_path;

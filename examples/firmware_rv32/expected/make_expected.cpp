@@ -71,8 +71,8 @@ int write_expected(const std::string& path) {
 
 int main(int argc, char** argv) {
   specular::cli::Command app{"Writes example_expected.h, the bits the bare-metal example must read back from the IP,\n"
-               "computed by Core for the example's operands.",
-               "specular_firmware_example_expected"};
+                             "computed by Core for the example's operands.",
+                             "specular_firmware_example_expected"};
   specular::cli::house_rules(app, "Exit status: 0 written, 1 the header could not be written, 2 bad usage.");
   std::string path;
   app.add_option("OUTPUT_HEADER", path, "the header to write")->required();

@@ -43,6 +43,7 @@ TEST(VariantErrorEveryVariant, RunsEveryOperationOfItsShard) {
     EXPECT_EQ(e.operations, expected) << name << ", shard " << shard.text();
     EXPECT_TRUE(std::isfinite(e.lobe.max_abs) && std::isfinite(e.lobe.mean_abs())) << name;
     EXPECT_TRUE(std::isfinite(e.out.max_abs) && std::isfinite(e.out.mean_abs())) << name;
+    EXPECT_GE(e.lobe.max_n, 1u) << name;
     EXPECT_TRUE(shard.covers(e.lobe.max_n)) << name << ": largest miss at n = " << e.lobe.max_n
                                             << ", outside shard " << shard.text();
     std::printf("%s (shard %s): lobe max %.6g at (%lld, %u), mean %.6g; out max %.6g at (%lld, %u), mean %.6g; %.1f s\n",

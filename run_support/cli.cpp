@@ -129,8 +129,6 @@ Option* Option::allow_extra_args(bool allow) {
   option_->allow_extra_args(allow);
   return this;
 }
-std::size_t Option::count() const { return option_->count(); }
-std::string Option::get_name() const { return option_->get_name(); }
 
 // ---- Command ----
 

@@ -58,8 +58,6 @@ class Option {
   Option* expected(int min, int max);  ///< values per use; max -1: unbounded
   Option* disable_flag_override();     ///< a flag takes no "=value"
   Option* allow_extra_args(bool allow);
-  std::size_t count() const;  ///< times given on the command line
-  std::string get_name() const;
 
  private:
   CLI::Option* option_;

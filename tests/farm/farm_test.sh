@@ -14,10 +14,14 @@
 # With "local", the same checks through the local executor (no Slurm needed): the
 # "killed" task is one whose status and partial are removed after the run, as a task
 # killed before it wrote them leaves it.
-# Usage: farm_test.sh BUILD_DIR [slurm|local]
+# The unsharded references are REFERENCE_DIR's when given (ctest: the fixture
+# farm_smoke_reference, tests/farm/farm_reference.sh, computes them once for both tests),
+# else computed here.
+# Usage: farm_test.sh BUILD_DIR [slurm|local] [REFERENCE_DIR]
 set -euo pipefail
 build=$(cd "$1" && pwd)
 executor=${2:-slurm}
+reference=${3:-}
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 farm="$root/scripts/farm/farm.sh"
 cluster="$root/scripts/farm/slurm_cluster.sh"
@@ -46,12 +50,12 @@ else
 fi
 
 # The unsharded reference of every group of the smoke regression.
-mkdir -p "$scratch/ref"
-while IFS=$'\t' read -r group kind args; do
-  tool="$build/tools/$kind/specular_$kind"; [[ $kind != tb ]] || tool="$build/testbench/specular_tb"
-  "$tool" $args --partial "$scratch/ref/$group.json" >"$scratch/ref/$group.txt" ||
-    fail "unsharded $group failed"
-done < <("$farm" list smoke --build "$build" | awk -F'\t' '!seen[$2]++ {sub(/ --shard [0-9]+\/[0-9]+$/, "", $4); print $2 "\t" $3 "\t" $4}')
+ref=$scratch/ref
+if [[ -n $reference ]]; then
+  ref=$(cd "$reference" && pwd)
+else
+  "$root/tests/farm/farm_reference.sh" "$build" "$ref" || fail "the unsharded references failed"
+fi
 
 # --groups: only the matching groups, every shard, with the ids of the whole list; a
 # pattern matching nothing, or not a regular expression, is refused with exit 2.
@@ -67,23 +71,23 @@ done
 # reset device: docs/energy.md, the merge tests compare it within 1 %).
 summary_block() { sed -n '/^summary:/,$p' "$1" | grep -v -e '^  run time ' -e '^  energy: '; }
 check_merged() {  # check_merged RUN_DIR: each group the run's tasks.tsv lists
-  local dir=$1 group ref
+  local dir=$1 group reftext
   for group in $(cut -f2 "$dir/tasks.tsv" | uniq); do
-    ref=$scratch/ref/$group.txt
-    [[ -f $ref ]] || fail "$group: no unsharded reference in $scratch/ref"
+    reftext=$ref/$group.txt
+    [[ -f $reftext ]] || fail "$group: no unsharded reference in $ref"
     [[ -f $dir/merged/$group.txt ]] || fail "no merged result of $group in $dir/merged"
     if [[ $group == prove_* ]]; then
-      cmp "$ref" "$dir/merged/$group.txt" || fail "$group: merged report differs from the unsharded one"
+      cmp "$reftext" "$dir/merged/$group.txt" || fail "$group: merged report differs from the unsharded one"
     elif [[ $group == variant_error_* ]]; then  # issue 26: the figures, less the wall time
-      cmp <(grep -v '^  wall ' "$ref") <(grep -v '^  wall ' "$dir/merged/$group.txt") ||
+      cmp <(grep -v '^  wall ' "$reftext") <(grep -v '^  wall ' "$dir/merged/$group.txt") ||
         fail "$group: merged figures differ from the unsharded ones"
     elif [[ $group == variant_* ]]; then  # a variant's RTL test: every shard passed
       grep -q ': PASS$' "$dir/merged/$group.txt" || fail "$group: the merge is not PASS"
     else
-      diff <(summary_block "$ref") <(summary_block "$dir/merged/$group.txt") || fail "$group: merged summary differs"
-      cmp <(jq -S ".summary | del(.energy_pj)" "$scratch/ref/$group.json") <(jq -S ".summary | del(.energy_pj)" "$dir/merged/$group.json") ||
+      diff <(summary_block "$reftext") <(summary_block "$dir/merged/$group.txt") || fail "$group: merged summary differs"
+      cmp <(jq -S ".summary | del(.energy_pj)" "$ref/$group.json") <(jq -S ".summary | del(.energy_pj)" "$dir/merged/$group.json") ||
         fail "$group: merged partial summary (maxima, places, checksum) differs"
-      cmp <(jq -S '.settings, .commit' "$scratch/ref/$group.json") <(jq -S '.settings, .commit' "$dir/merged/$group.json") ||
+      cmp <(jq -S '.settings, .commit' "$ref/$group.json") <(jq -S '.settings, .commit' "$dir/merged/$group.json") ||
         fail "$group: merged settings or commit differ"
     fi
     echo "farm_test.sh: $group: merged == unsharded"
@@ -97,7 +101,7 @@ if [[ $executor == slurm ]]; then
 else
   "$farm" submit smoke "${run_options[@]}" --out "$scratch/run1" || fail "the smoke regression failed (see $scratch/run1)"
 fi
-[[ $(cut -f2 "$scratch/run1/tasks.tsv" | sort -u | wc -l) -eq $(find "$scratch/ref" -name '*.txt' | wc -l) ]] ||
+[[ $(cut -f2 "$scratch/run1/tasks.tsv" | sort -u | wc -l) -eq $(find "$ref" -name '*.txt' | wc -l) ]] ||
   fail "run 1 is not the whole smoke regression: $(cut -f2 "$scratch/run1/tasks.tsv" | sort -u | wc -l) groups"
 check_merged "$scratch/run1"
 jq -e '.verdict == "PASS" and .tasks_finished == .tasks_total and .total_cpu_seconds > 0' "$scratch/run1/report.json" >/dev/null ||

@@ -150,8 +150,9 @@ TEST(VcdWaveform, RealViewsOnRequestMirrorTheCodes) {
     const auto* v = vcd.find(dut + "." + view);
     ASSERT_NE(v, nullptr) << view;
     EXPECT_EQ(v->type, "real") << view;
+    const std::string& bus_name = bus;  // a lambda may not capture a structured binding before C++20
     const auto shown = std::find_if(shown_buses().begin(), shown_buses().end(),
-                                    [&](const Shown& b) { return b.name == bus; });
+                                    [&](const Shown& b) { return b.name == bus_name; });
     ASSERT_NE(shown, shown_buses().end()) << bus;
     for (const long long t : dones) {
       const std::string real = vcd.at(dut + "." + view, t);

@@ -101,9 +101,9 @@ ErrorSummary::Worst worst_from(const tb::Json& j) {
   return {j.at("value").get<double>(), j.at("n").get<unsigned>(), j.at("at_cos").get<double>()};
 }
 
+// The stages: constants search, error study, energy integrals, device-energy integrals,
+// width exploration, sphere renders (a shard runs every count-th of them).
 constexpr std::size_t stage_count = 6;
-const char* const stage_names[stage_count] = {"constants search", "error study", "energy integrals",
-                                              "device-energy integrals", "width exploration", "sphere renders"};
 
 struct StudyResults {
   ErrorSummary errors;

@@ -69,8 +69,10 @@ class RowBuffer {
   void put(char ch) { *end_++ = ch; }
   void real(double value) {
     // std::to_chars's shortest form costs about 50 ns; an integer below 10^5 (most of
-    // a run's zeros) reads the same in its shortest form ("-0" for -0.0 excepted).
-    if (value == static_cast<double>(static_cast<int>(value)) && value > -1e5 && value < 1e5 &&
+    // a run's zeros) reads the same in its shortest form ("-0" for -0.0 excepted). The
+    // range first: a double outside int's (1e300, a NaN) converted to int is undefined
+    // behaviour (clang's UBSan, float-cast-overflow, which gcc's leaves out).
+    if (value > -1e5 && value < 1e5 && value == static_cast<double>(static_cast<int>(value)) &&
         !(value == 0 && std::signbit(value))) {
       const int whole = static_cast<int>(value);
       if (whole < 0) *end_++ = '-';

@@ -19,7 +19,7 @@ set -euo pipefail
 #   graphviz                            scripts/render_figures.sh (docs/fig1.svg, fig2.svg)
 #   python3-numpy, python3-matplotlib   plots of the numerical study
 #   gnuplot-nox                         quick plots from the testbench's CSV output
-#   clang-14, libclang-rt-14-dev        scripts/verify/fuzz.sh: libFuzzer and clang's sanitizer
+#   clang-14, libclang-rt-14-dev        scripts/verify/sanitize.sh, fuzz.sh: libFuzzer and clang's sanitizer
 #                                       runtimes (libclang_rt.fuzzer, asan, ubsan)
 #   verilator, iverilog, yosys          the RTL twin (rtl/, twin/, docs/rtl.md): Verilator
 #                                       5.006 compiles it into C++ models, Icarus Verilog 11

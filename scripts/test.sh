@@ -14,9 +14,9 @@
 # in Release instead), and scripts/verify/suite_partition.sh checks that no test is left
 # out. Then, unless skipped: the consumer of the installed package
 # (scripts/verify/consumer_check.sh; SPECULAR_SKIP_CONSUMER=1 skips it) and a bounded
-# libFuzzer run, 30 s per target (scripts/verify/fuzz.sh, build-fuzz; SPECULAR_SKIP_FUZZ=1
-# skips it). Each stage's wall time is printed at its end and all of them at exit
-# (docs/testing/ci_budget.md, "Measured").
+# libFuzzer run, 30 s per target (scripts/verify/fuzz.sh; the targets from the sanitizer
+# stage's clang build, else build-fuzz; SPECULAR_SKIP_FUZZ=1 skips it). Each stage's wall
+# time is printed at its end and all of them at exit (docs/testing/ci_budget.md, "Measured").
 # Needs the packages of scripts/setup.sh.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -111,6 +111,13 @@ if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ]; then
   stage suite_partition scripts/verify/suite_partition.sh build "${SPECULAR_ASAN_BUILD_DIR:-build-asan}" "$later"
 fi
 if [ "${SPECULAR_SKIP_FUZZ:-0}" != 1 ]; then
-  echo "+ scripts/verify/fuzz.sh 30"
+  # The sanitizer stage built the fuzz targets when it built with clang (sanitize.sh):
+  # fuzz.sh runs them from its folder instead of building its own (build-fuzz).
+  asan_build=${SPECULAR_ASAN_BUILD_DIR:-build-asan}
+  if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ] && [ -z "${SPECULAR_FUZZ_BUILD_DIR:-}" ] &&
+     grep -qs '^SPECULAR_FUZZ:BOOL=ON$' "$asan_build/CMakeCache.txt"; then
+    export SPECULAR_FUZZ_BUILD_DIR=$asan_build
+  fi
+  echo "+ SPECULAR_FUZZ_BUILD_DIR=${SPECULAR_FUZZ_BUILD_DIR:-build-fuzz} scripts/verify/fuzz.sh 30"
   stage fuzz scripts/verify/fuzz.sh 30
 fi

@@ -5,16 +5,18 @@
 #
 #   scripts/verify/fuzz.sh [SECONDS]    seconds per target (default 60)
 #
-# Build directory: build-fuzz (or $SPECULAR_FUZZ_BUILD_DIR). New corpus entries go to
-# <build>/corpus/<target>, crashes to <build>/artifacts/<target>/ (copy a crash to
-# fuzz/regressions/<target>/ once fixed, so that every later run replays it).
+# Build directory: build-fuzz (or $SPECULAR_FUZZ_BUILD_DIR: scripts/test.sh passes the
+# sanitizer stage's build-asan, which holds the targets when clang built it; a folder
+# configured with -DSPECULAR_FUZZ=ON before is built as it is configured). New corpus
+# entries go to <build>/corpus/<target>, crashes to <build>/artifacts/<target>/ (copy a
+# crash to fuzz/regressions/<target>/ once fixed, so that every later run replays it).
 # Needs clang-14 and libclang-rt-14-dev (scripts/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 seconds=${1:-60}
 case "$seconds" in
-  -h|--help) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
 esac
 if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ] || [ "$seconds" -gt 86400 ]; then
   echo "fuzz.sh: SECONDS = '$seconds' must be an integer in [1, 86400]" >&2
@@ -34,10 +36,15 @@ targets=(fuzz_csv_options fuzz_tlm_registers fuzz_tlm_sequences)
 # reports, a quarter less compile time than RelWithDebInfo's -O2 -g (docs/testing.md).
 configure=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG"
            -DSPECULAR_FUZZ=ON -DSPECULAR_BUILD_TESTS=OFF -DSPECULAR_BUILD_BENCH=OFF)
-# The compiler is set on the first configure only: changing it later empties the cache.
-if [ ! -f "$build/CMakeCache.txt" ]; then configure+=(-DCMAKE_CXX_COMPILER="$cxx"); fi
-echo "+ cmake -S . -B $build ${configure[*]}"
-cmake -S . -B "$build" "${configure[@]}" >/dev/null
+if grep -qs '^SPECULAR_FUZZ:BOOL=ON$' "$build/CMakeCache.txt"; then
+  # The sanitizer stage's build (or an earlier run's): its configuration stays.
+  echo "fuzz.sh: $build is configured with SPECULAR_FUZZ=ON; building its fuzz targets as configured"
+else
+  # The compiler is set on the first configure only: changing it later empties the cache.
+  if [ ! -f "$build/CMakeCache.txt" ]; then configure+=(-DCMAKE_CXX_COMPILER="$cxx"); fi
+  echo "+ cmake -S . -B $build ${configure[*]}"
+  cmake -S . -B "$build" "${configure[@]}" >/dev/null
+fi
 echo "+ cmake --build $build -j$jobs --target ${targets[*]}"
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 

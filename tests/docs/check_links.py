@@ -10,8 +10,9 @@ repository root when it starts with `/`), must be an existing file or folder; an
 anchor must be the GitHub slug of a heading of the target .md file. Links inside code
 (fenced blocks, `inline code`) are not links. Not checked: http(s), mailto and other
 schemes, and links into the build tree (`build/...`), which exists only after a build.
-Also checks that README.md has at most 200 lines, and that docs/README.md, the index,
-links every page docs/*.md and every folder of docs/.
+Also checks that README.md has at most 200 lines, every page under docs/ at most 400
+(issue 62: a long page is split by topic), and that docs/README.md, the index, links
+every page docs/*.md and every folder of docs/.
 
 Prints each broken link as FILE:LINE: what is wrong; exits 1 if there is one, else 0.
 Standard library only.
@@ -22,6 +23,7 @@ import sys
 import urllib.parse
 
 README_MAX_LINES = 200
+PAGE_MAX_LINES = 400
 
 FENCE = re.compile(r"^\s{0,3}(```|~~~)")
 INLINE_CODE = re.compile(r"(`+)(.+?)\1")
@@ -179,6 +181,13 @@ def main(argv):
     if readme_lines > README_MAX_LINES:
         broken.append(f"README.md:{readme_lines}: {readme_lines} lines, more than the front "
                       f"page's {README_MAX_LINES} (move the detail into a docs/ page)")
+
+    for md in pages[1:]:
+        with open(md, encoding="utf-8") as f:
+            page_lines = sum(1 for _ in f)
+        if page_lines > PAGE_MAX_LINES:
+            broken.append(f"{os.path.relpath(md, root)}:{page_lines}: {page_lines} lines, more "
+                          f"than a page's {PAGE_MAX_LINES} (split it by topic)")
 
     for line in broken:
         print(line)

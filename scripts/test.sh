@@ -111,13 +111,8 @@ if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ]; then
   stage suite_partition scripts/verify/suite_partition.sh build "${SPECULAR_ASAN_BUILD_DIR:-build-asan}" "$later"
 fi
 if [ "${SPECULAR_SKIP_FUZZ:-0}" != 1 ]; then
-  # The sanitizer stage built the fuzz targets when it built with clang (sanitize.sh):
-  # fuzz.sh runs them from its folder instead of building its own (build-fuzz).
-  asan_build=${SPECULAR_ASAN_BUILD_DIR:-build-asan}
-  if [ "${SPECULAR_SKIP_SANITIZE:-0}" != 1 ] && [ -z "${SPECULAR_FUZZ_BUILD_DIR:-}" ] &&
-     grep -qs '^SPECULAR_FUZZ:BOOL=ON$' "$asan_build/CMakeCache.txt"; then
-    export SPECULAR_FUZZ_BUILD_DIR=$asan_build
-  fi
-  echo "+ SPECULAR_FUZZ_BUILD_DIR=${SPECULAR_FUZZ_BUILD_DIR:-build-fuzz} scripts/verify/fuzz.sh 30"
+  # From the sanitizer stage's build when clang built it with the fuzz targets (fuzz.sh
+  # picks the folder), else from a build of its own.
+  echo "+ scripts/verify/fuzz.sh 30"
   stage fuzz scripts/verify/fuzz.sh 30
 fi

@@ -5,11 +5,11 @@
 #
 #   scripts/verify/fuzz.sh [SECONDS]    seconds per target (default 60)
 #
-# Build directory: build-fuzz (or $SPECULAR_FUZZ_BUILD_DIR: scripts/test.sh passes the
-# sanitizer stage's build-asan, which holds the targets when clang built it; a folder
-# configured with -DSPECULAR_FUZZ=ON before is built as it is configured). New corpus
-# entries go to <build>/corpus/<target>, crashes to <build>/artifacts/<target>/ (copy a
-# crash to fuzz/regressions/<target>/ once fixed, so that every later run replays it).
+# Build directory: $SPECULAR_FUZZ_BUILD_DIR, else the sanitizer stage's build-asan (or
+# $SPECULAR_ASAN_BUILD_DIR) when it holds the targets (sanitize.sh with clang), else
+# build-fuzz; a folder configured with -DSPECULAR_FUZZ=ON is built as it is configured.
+# New corpus entries go to <build>/corpus/<target>, crashes to <build>/artifacts/<target>/
+# (copy a crash to fuzz/regressions/<target>/ once fixed: every later run replays it).
 # Needs clang-14 and libclang-rt-14-dev (scripts/setup.sh).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -29,7 +29,14 @@ if [ -z "$cxx" ] || ! command -v "$cxx" >/dev/null 2>&1; then
   exit 1
 fi
 
-build=${SPECULAR_FUZZ_BUILD_DIR:-build-fuzz}
+asan_build=${SPECULAR_ASAN_BUILD_DIR:-build-asan}
+if [ -n "${SPECULAR_FUZZ_BUILD_DIR:-}" ]; then
+  build=$SPECULAR_FUZZ_BUILD_DIR
+elif grep -qs '^SPECULAR_FUZZ:BOOL=ON$' "$asan_build/CMakeCache.txt"; then
+  build=$asan_build  # the sanitizer stage's clang build holds the targets: no second build
+else
+  build=build-fuzz
+fi
 jobs=$(nproc 2>/dev/null || echo 2)
 targets=(fuzz_csv_options fuzz_tlm_registers fuzz_tlm_sequences)
 # -O1 -gline-tables-only: what libFuzzer's documentation builds with; line numbers in
@@ -37,7 +44,7 @@ targets=(fuzz_csv_options fuzz_tlm_registers fuzz_tlm_sequences)
 configure=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only -DNDEBUG"
            -DSPECULAR_FUZZ=ON -DSPECULAR_BUILD_TESTS=OFF -DSPECULAR_BUILD_BENCH=OFF)
 if grep -qs '^SPECULAR_FUZZ:BOOL=ON$' "$build/CMakeCache.txt"; then
-  # The sanitizer stage's build (or an earlier run's): its configuration stays.
+  # The sanitizer stage's build (or an earlier run of this script's): its configuration stays.
   echo "fuzz.sh: $build is configured with SPECULAR_FUZZ=ON; building its fuzz targets as configured"
 else
   # The compiler is set on the first configure only: changing it later empties the cache.
